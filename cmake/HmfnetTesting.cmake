@@ -1,0 +1,33 @@
+# One helper per CTest category (Nalu-Wind style): every test gets a label and a TIMEOUT.
+#   unit          fast Catch2 tests, run by CI
+#   verification  one driver per claim of the paper, CI scale (CI runs them)
+#   regression    comparison against stored reference HDF5 in reference/ (CI runs them)
+#   mpi           tests run under mpirun with 2 ranks (CI runs them)
+#   paper         paper-figure pipeline steps
+set(HMFNET_MPIEXEC ${MPIEXEC_EXECUTABLE})
+set(HMFNET_MPI_FLAGS --allow-run-as-root --oversubscribe)
+
+function(hmfnet_catch_tests target label timeout)
+  catch_discover_tests(${target} PROPERTIES LABELS ${label} TIMEOUT ${timeout})
+endfunction()
+
+function(hmfnet_add_verification name timeout)
+  add_test(NAME verification.${name} COMMAND ${ARGN})
+  set_tests_properties(verification.${name} PROPERTIES LABELS verification TIMEOUT ${timeout})
+endfunction()
+
+function(hmfnet_add_verification_full name timeout)
+  add_test(NAME verification-full.${name} COMMAND ${ARGN})
+  set_tests_properties(verification-full.${name} PROPERTIES LABELS verification-full TIMEOUT ${timeout})
+endfunction()
+
+function(hmfnet_add_mpi_test name nranks timeout)
+  add_test(NAME mpi.${name}
+           COMMAND ${HMFNET_MPIEXEC} ${HMFNET_MPI_FLAGS} ${MPIEXEC_NUMPROC_FLAG} ${nranks} ${ARGN})
+  set_tests_properties(mpi.${name} PROPERTIES LABELS mpi TIMEOUT ${timeout} PROCESSORS ${nranks})
+endfunction()
+
+function(hmfnet_add_cli_test name label timeout)
+  add_test(NAME ${label}.${name} COMMAND ${ARGN})
+  set_tests_properties(${label}.${name} PROPERTIES LABELS ${label} TIMEOUT ${timeout})
+endfunction()

@@ -1,0 +1,66 @@
+// hmfnet: command-line entry point. `hmfnet --help` lists the subcommands.
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "core/error.hpp"
+#include "hmfnet/version.hpp"
+#include "parallel/parallel_session.hpp"
+
+namespace hmfnet::cli {
+
+namespace {
+std::string g_command_line;
+}
+
+const std::string& command_line() { return g_command_line; }
+
+void set_command_line(int argc, char** argv) {
+  g_command_line.clear();
+  for (int k = 0; k < argc; ++k) {
+    if (k > 0) g_command_line += ' ';
+    g_command_line += argv[k];
+  }
+}
+
+bool is_root() { return ParallelSession::rank() == 0; }
+
+}  // namespace hmfnet::cli
+
+namespace {
+
+int run(int argc, char** argv) {
+  CLI::App app{"hmfnet: the Hamiltonian Mean Field model of coupled rotors on networks"};
+  app.set_version_flag("--version", std::string(hmfnet::k_version) + " (" +
+                                        hmfnet::k_git_commit + ")");
+  app.require_subcommand(1);
+  // One line, like every other error: "hmfnet: error: CAUSE (see --help)".
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return "hmfnet: error: " + std::string(e.what()) + " (see --help)\n";
+  });
+  hmfnet::cli::add_generate_command(app);
+  hmfnet::cli::add_rewire_command(app);
+  hmfnet::cli::add_spectrum_command(app);
+  hmfnet::cli::add_demo_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;  // 0: --help or --version
+  } catch (const hmfnet::ConvergenceError& e) {
+    std::cerr << "hmfnet: not converged: " << e.what() << '\n';
+    return 3;
+  } catch (const std::exception& e) {
+    std::cerr << "hmfnet: error: " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  hmfnet::cli::set_command_line(argc, argv);
+  hmfnet::ParallelSession session(&argc, &argv);
+  return run(argc, argv);
+}

@@ -1,0 +1,204 @@
+#include "io/hdf5_file.hpp"
+
+#include "core/error.hpp"
+
+namespace hmfnet {
+
+namespace {
+
+// HDF5 prints its error stack to stderr by default; our errors say it in one line instead.
+struct SilenceHdf5 {
+  SilenceHdf5() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+};
+
+void silence() { static const SilenceHdf5 once; }
+
+hsize_t length_of(std::size_t n) { return static_cast<hsize_t>(n); }
+
+}  // namespace
+
+H5Id& H5Id::operator=(H5Id&& other) noexcept {
+  if (this != &other) {
+    if (m_id >= 0 && m_close != nullptr) m_close(m_id);
+    m_id = other.m_id;
+    m_close = other.m_close;
+    other.m_id = -1;
+  }
+  return *this;
+}
+
+H5Id::~H5Id() {
+  if (m_id >= 0 && m_close != nullptr) m_close(m_id);
+}
+
+Hdf5File::Hdf5File(const std::string& path, Mode mode) : m_path(path) {
+  silence();
+  if (mode == Mode::read) {
+    if (H5Fis_hdf5(path.c_str()) <= 0) fail("not an HDF5 file (or cannot be read)");
+    m_file = H5Id(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  } else {
+    m_file = H5Id(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+  }
+  if (m_file.get() < 0) fail(mode == Mode::read ? "cannot open" : "cannot create");
+}
+
+void Hdf5File::fail(const std::string& cause) const { throw InputError(m_path, 0, cause); }
+
+H5Id Hdf5File::create_group(const std::string& name) const {
+  H5Id g(H5Gcreate2(id(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  if (g.get() < 0) fail("cannot create group " + name);
+  return g;
+}
+
+H5Id Hdf5File::open_group(const std::string& name) const {
+  if (!exists(name)) fail("missing group " + name);
+  H5Id g(H5Gopen2(id(), name.c_str(), H5P_DEFAULT), H5Gclose);
+  if (g.get() < 0) fail("cannot open group " + name);
+  return g;
+}
+
+bool Hdf5File::exists(const std::string& name) const {
+  return H5Lexists(id(), name.c_str(), H5P_DEFAULT) > 0;
+}
+
+namespace {
+template <class T>
+void write_vector(const Hdf5File& f, hid_t where, const std::string& name, const std::vector<T>& v,
+                  hid_t file_type, hid_t mem_type) {
+  const hsize_t dims[1] = {length_of(v.size())};
+  H5Id space(H5Screate_simple(1, dims, nullptr), H5Sclose);
+  H5Id set(H5Dcreate2(where, name.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT,
+                      H5P_DEFAULT),
+           H5Dclose);
+  if (set.get() < 0) f.fail("cannot create dataset " + name);
+  if (!v.empty() && H5Dwrite(set.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0) {
+    f.fail("cannot write dataset " + name);
+  }
+}
+}  // namespace
+
+void Hdf5File::write(hid_t where, const std::string& name, const std::vector<std::int64_t>& v) const {
+  write_vector(*this, where, name, v, H5T_STD_I64LE, H5T_NATIVE_INT64);
+}
+void Hdf5File::write(hid_t where, const std::string& name, const std::vector<std::int32_t>& v) const {
+  write_vector(*this, where, name, v, H5T_STD_I32LE, H5T_NATIVE_INT32);
+}
+void Hdf5File::write(hid_t where, const std::string& name, const std::vector<double>& v) const {
+  write_vector(*this, where, name, v, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE);
+}
+
+std::size_t Hdf5File::dataset_length(hid_t set, const std::string& name,
+                                     H5T_class_t expected) const {
+  H5Id type(H5Dget_type(set), H5Tclose);
+  if (H5Tget_class(type.get()) != expected) fail("dataset " + name + " has the wrong type class");
+  H5Id space(H5Dget_space(set), H5Sclose);
+  if (H5Sget_simple_extent_ndims(space.get()) != 1) fail("dataset " + name + " is not 1-D");
+  hsize_t dims[1] = {0};
+  H5Sget_simple_extent_dims(space.get(), dims, nullptr);
+  return static_cast<std::size_t>(dims[0]);
+}
+
+
+namespace {
+template <class T>
+std::vector<T> read_vector(const Hdf5File& f, hid_t where, const std::string& name,
+                           std::size_t length, hid_t mem_type) {
+  H5Id set(H5Dopen2(where, name.c_str(), H5P_DEFAULT), H5Dclose);
+  std::vector<T> v(length);
+  if (!v.empty() && H5Dread(set.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0) {
+    f.fail("cannot read dataset " + name + " (values out of range for its type?)");
+  }
+  return v;
+}
+}  // namespace
+
+std::size_t Hdf5File::checked_length(hid_t where, const std::string& name,
+                                     H5T_class_t expected) const {
+  if (H5Lexists(where, name.c_str(), H5P_DEFAULT) <= 0) fail("missing dataset " + name);
+  H5Id set(H5Dopen2(where, name.c_str(), H5P_DEFAULT), H5Dclose);
+  if (set.get() < 0) fail("cannot open dataset " + name);
+  return dataset_length(set.get(), name, expected);
+}
+
+std::vector<std::int64_t> Hdf5File::read_int64(hid_t where, const std::string& name) const {
+  const std::size_t n = checked_length(where, name, H5T_INTEGER);
+  return read_vector<std::int64_t>(*this, where, name, n, H5T_NATIVE_INT64);
+}
+
+std::vector<std::int32_t> Hdf5File::read_int32(hid_t where, const std::string& name) const {
+  const std::size_t n = checked_length(where, name, H5T_INTEGER);
+  return read_vector<std::int32_t>(*this, where, name, n, H5T_NATIVE_INT32);
+}
+
+std::vector<double> Hdf5File::read_double(hid_t where, const std::string& name) const {
+  const std::size_t n = checked_length(where, name, H5T_FLOAT);
+  return read_vector<double>(*this, where, name, n, H5T_NATIVE_DOUBLE);
+}
+
+namespace {
+void write_scalar_attribute(const Hdf5File& f, hid_t where, const std::string& name, hid_t type,
+                            const void* value) {
+  H5Id space(H5Screate(H5S_SCALAR), H5Sclose);
+  if (H5Aexists(where, name.c_str()) > 0) H5Adelete(where, name.c_str());
+  H5Id attr(H5Acreate2(where, name.c_str(), type, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  if (attr.get() < 0 || H5Awrite(attr.get(), type, value) < 0) {
+    f.fail("cannot write attribute " + name);
+  }
+}
+}  // namespace
+
+void Hdf5File::set_attribute(hid_t where, const std::string& name, const std::string& value) const {
+  H5Id type(H5Tcopy(H5T_C_S1), H5Tclose);
+  H5Tset_size(type.get(), value.empty() ? 1 : value.size());
+  H5Tset_strpad(type.get(), H5T_STR_NULLPAD);
+  H5Tset_cset(type.get(), H5T_CSET_UTF8);
+  const std::string padded = value.empty() ? std::string(1, '\0') : value;
+  write_scalar_attribute(*this, where, name, type.get(), padded.data());
+}
+
+void Hdf5File::set_attribute(hid_t where, const std::string& name, std::int64_t value) const {
+  write_scalar_attribute(*this, where, name, H5T_NATIVE_INT64, &value);
+}
+
+void Hdf5File::set_attribute(hid_t where, const std::string& name, double value) const {
+  write_scalar_attribute(*this, where, name, H5T_NATIVE_DOUBLE, &value);
+}
+
+bool Hdf5File::has_attribute(hid_t where, const std::string& name) const {
+  return H5Aexists(where, name.c_str()) > 0;
+}
+
+std::string Hdf5File::string_attribute(hid_t where, const std::string& name) const {
+  if (!has_attribute(where, name)) fail("missing attribute " + name);
+  H5Id attr(H5Aopen(where, name.c_str(), H5P_DEFAULT), H5Aclose);
+  H5Id type(H5Aget_type(attr.get()), H5Tclose);
+  if (H5Tget_class(type.get()) != H5T_STRING || H5Tis_variable_str(type.get()) > 0) {
+    fail("attribute " + name + " is not a fixed-length string");
+  }
+  std::string value(H5Tget_size(type.get()), '\0');
+  if (H5Aread(attr.get(), type.get(), value.data()) < 0) fail("cannot read attribute " + name);
+  value.resize(value.find('\0') == std::string::npos ? value.size() : value.find('\0'));
+  return value;
+}
+
+std::int64_t Hdf5File::int_attribute(hid_t where, const std::string& name) const {
+  if (!has_attribute(where, name)) fail("missing attribute " + name);
+  H5Id attr(H5Aopen(where, name.c_str(), H5P_DEFAULT), H5Aclose);
+  std::int64_t value = 0;
+  if (H5Aread(attr.get(), H5T_NATIVE_INT64, &value) < 0) fail("cannot read attribute " + name);
+  return value;
+}
+
+double Hdf5File::double_attribute(hid_t where, const std::string& name) const {
+  if (!has_attribute(where, name)) fail("missing attribute " + name);
+  H5Id attr(H5Aopen(where, name.c_str(), H5P_DEFAULT), H5Aclose);
+  double value = 0.0;
+  if (H5Aread(attr.get(), H5T_NATIVE_DOUBLE, &value) < 0) fail("cannot read attribute " + name);
+  return value;
+}
+
+void Hdf5File::flush() const {
+  if (H5Fflush(id(), H5F_SCOPE_GLOBAL) < 0) fail("flush failed (disk full?)");
+}
+
+}  // namespace hmfnet

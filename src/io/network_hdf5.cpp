@@ -1,0 +1,82 @@
+#include "io/network_hdf5.hpp"
+
+#include <limits>
+
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "hmfnet/version.hpp"
+#include "io/hdf5_file.hpp"
+
+namespace hmfnet {
+
+namespace {
+constexpr std::int64_t k_format_version = 1;
+}
+
+ReadResult read_network_hdf5(const std::string& path) {
+  const Hdf5File file(path, Hdf5File::Mode::read);
+  const hid_t root = file.id();
+  if (!file.has_attribute(root, "hmfnet_format") ||
+      file.string_attribute(root, "hmfnet_format") != "network") {
+    file.fail("not an hmfnet network file (attribute hmfnet_format != \"network\")");
+  }
+  const std::int64_t version = file.int_attribute(root, "format_version");
+  if (version != k_format_version) {
+    file.fail("network format version " + std::to_string(version) + " is not supported (" +
+              std::to_string(k_format_version) + ")");
+  }
+  const H5Id group = file.open_group("network");
+  const std::int64_t n = file.int_attribute(group.get(), "n");
+  if (n < 0 || n > std::numeric_limits<NodeIndex>::max()) {
+    file.fail("/network: node count " + std::to_string(n) + " out of range");
+  }
+  auto row_ptr = file.read_int64(group.get(), "row_ptr");
+  auto cols = file.read_int32(group.get(), "col");
+  std::vector<double> weights;
+  if (file.int_attribute(group.get(), "weighted") != 0) {
+    weights = file.read_double(group.get(), "weights");
+  }
+  // Network::check_csr walks col[row_ptr[i]..row_ptr[i+1]) row by row and only then sees a
+  // pointer that is out of order, so pointers from a file are bounded first: a corrupted one
+  // must be refused, not read past the end of col.
+  const auto nnz = static_cast<std::int64_t>(cols.size());
+  for (std::size_t i = 0; i < row_ptr.size(); ++i) {
+    const std::int64_t low = i == 0 ? 0 : row_ptr[i - 1];
+    if (row_ptr[i] < low || row_ptr[i] > nnz) {
+      file.fail("/network: row_ptr[" + std::to_string(i) + "] = " + std::to_string(row_ptr[i]) +
+                " is outside [" + std::to_string(low) + ", nnz = " + std::to_string(nnz) + "]");
+    }
+  }
+  const auto nodes = static_cast<NodeIndex>(n);
+  const std::string why = Network::check_csr(nodes, row_ptr, cols, weights);
+  if (!why.empty()) file.fail("/network: " + why);
+  if (cols.empty()) file.fail("empty network: " + std::to_string(n) + " nodes and no edges");
+  return {Network::from_csr(nodes, std::move(row_ptr), std::move(cols), std::move(weights)), {}};
+}
+
+void write_network_hdf5(const std::string& path, const Network& network,
+                        const std::string& provenance) {
+  AtomicFile out(path);
+  {
+    const Hdf5File file(out.temp_path(), Hdf5File::Mode::create);
+    const hid_t root = file.id();
+    file.set_attribute(root, "hmfnet_format", std::string("network"));
+    file.set_attribute(root, "format_version", k_format_version);
+    file.set_attribute(root, "hmfnet_version", std::string(k_version));
+    file.set_attribute(root, "git_commit", std::string(k_git_commit));
+    file.set_attribute(root, "provenance", provenance);
+    const H5Id group = file.create_group("network");
+    file.set_attribute(group.get(), "n", static_cast<std::int64_t>(network.size()));
+    file.set_attribute(group.get(), "nnz", static_cast<std::int64_t>(network.nnz()));
+    file.set_attribute(group.get(), "edges", static_cast<std::int64_t>(network.edges()));
+    file.set_attribute(group.get(), "self_loops", static_cast<std::int64_t>(network.self_loops()));
+    file.set_attribute(group.get(), "weighted", static_cast<std::int64_t>(network.weighted()));
+    file.write(group.get(), "row_ptr", network.row_ptr());
+    file.write(group.get(), "col", network.cols());
+    if (network.weighted()) file.write(group.get(), "weights", network.weights());
+    file.flush();
+  }
+  out.commit();
+}
+
+}  // namespace hmfnet

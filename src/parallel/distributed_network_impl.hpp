@@ -1,0 +1,24 @@
+#pragma once
+// Private: the Tpetra types behind DistributedNetwork. Include only from .cpp files that need
+// Trilinos (each such translation unit costs ~15 s and ~0.6 GB to compile).
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_MultiVector.hpp>
+
+#include "parallel/distributed_network.hpp"
+
+namespace hmfnet {
+
+using TpetraMap = Tpetra::Map<>;
+using TpetraMatrix = Tpetra::CrsMatrix<double>;
+using TpetraMultiVector = Tpetra::MultiVector<double>;
+using TpetraOperator = Tpetra::Operator<double>;
+using GlobalOrdinal = TpetraMap::global_ordinal_type;
+using LocalOrdinal = TpetraMap::local_ordinal_type;
+
+struct DistributedNetwork::Impl {
+  Teuchos::RCP<const TpetraMap> map;
+  Teuchos::RCP<TpetraMatrix> matrix;
+};
+
+}  // namespace hmfnet

@@ -1,0 +1,25 @@
+#include "spectral/dense_spectrum.hpp"
+
+#include <Eigen/Dense>
+#include <stdexcept>
+
+namespace hmfnet {
+
+DenseSpectrum dense_spectrum(const Network& network) {
+  const NodeIndex n = network.size();
+  if (n > 4000) throw std::invalid_argument("dense spectrum refused for N > 4000");
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
+  for (NodeIndex i = 0; i < n; ++i)
+    for (EdgeOffset k = network.row_begin(i); k < network.row_end(i); ++k)
+      a(i, network.col(k)) = network.weight(k);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(a);
+  if (solver.info() != Eigen::Success) throw std::runtime_error("Eigen eigensolver failed");
+  DenseSpectrum s;
+  s.eigenvalues.assign(solver.eigenvalues().data(), solver.eigenvalues().data() + n);
+  Eigen::VectorXd u = solver.eigenvectors().col(n - 1);
+  if (u.sum() < 0.0) u = -u;
+  s.perron.assign(u.data(), u.data() + n);
+  return s;
+}
+
+}  // namespace hmfnet

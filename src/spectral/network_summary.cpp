@@ -1,0 +1,79 @@
+#include "spectral/network_summary.hpp"
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+
+#include "network/degree_statistics.hpp"
+#include "network/structure.hpp"
+#include "theory/critical_coupling.hpp"
+#include "theory/onset_amplitude.hpp"
+
+namespace hmfnet {
+
+NetworkSummary summarise(const Network& network, const PerronResult& perron, double sigma0) {
+  NetworkSummary s;
+  s.n = network.size();
+  s.edges = network.edges();
+  s.nnz = network.nnz();
+  s.self_loops = network.self_loops();
+  s.weighted = network.weighted();
+  const auto d = network.degrees();
+  s.mean_degree = mean_degree(network);
+  s.max_degree = *std::max_element(d.begin(), d.end());
+  s.rho = degree_correlation(network);
+  const Components c = connected_components(network);
+  s.components = c.count;
+  s.largest_component = c.largest;
+  s.bipartite = is_bipartite(network);
+  s.lambda = perron.lambda;
+  s.lambda_residual = perron.residual;
+  s.perron_nonnegative = perron.nonnegative;
+  s.eigen_iterations = perron.iterations;
+  s.eigen_seconds = perron.seconds;
+  s.G = onset_amplitude(perron.lambda, s.mean_degree, perron.u);
+  if (sigma0 > 0.0) {
+    s.sigma0 = sigma0;
+    s.Kc = critical_coupling(sigma0, s.n, s.lambda);
+  }
+  if (s.components > 1) {
+    s.warnings.push_back(std::to_string(s.components) +
+                         " connected components: A is reducible, the Perron-Frobenius assumption "
+                         "of the theory fails (lambda and u belong to one component)");
+  }
+  if (s.bipartite) {
+    s.warnings.push_back("bipartite network: -lambda is also an eigenvalue (lambda_min = -lambda)");
+  }
+  if (!s.perron_nonnegative) {
+    s.warnings.push_back("the eigenvector of lambda changes sign: lambda is degenerate");
+  }
+  return s;
+}
+
+std::string to_json(const NetworkSummary& s) {
+  nlohmann::json j;
+  j["n"] = s.n;
+  j["edges"] = s.edges;
+  j["nnz"] = s.nnz;
+  j["self_loops"] = s.self_loops;
+  j["weighted"] = s.weighted;
+  j["mean_degree"] = s.mean_degree;
+  j["max_degree"] = s.max_degree;
+  j["lambda"] = s.lambda;
+  j["lambda_residual"] = s.lambda_residual;
+  j["rho"] = s.rho;
+  j["G"] = s.G;
+  j["components"] = s.components;
+  j["largest_component"] = s.largest_component;
+  j["bipartite"] = s.bipartite;
+  j["perron_nonnegative"] = s.perron_nonnegative;
+  j["eigensolver_iterations"] = s.eigen_iterations;
+  j["eigensolver_seconds"] = s.eigen_seconds;
+  if (s.sigma0 > 0.0) {
+    j["sigma0"] = s.sigma0;
+    j["Kc"] = s.Kc;
+  }
+  j["warnings"] = s.warnings;
+  return j.dump();
+}
+
+}  // namespace hmfnet

@@ -1,0 +1,44 @@
+#pragma once
+// Everything `hmfnet spectrum` reports about a network: sizes, degrees, rho (eq:rhodef),
+// structure (components, bipartiteness), lambda and its residual, G (eq:globalOrderRInDeltaK),
+// and K_c (eq:criticalKFirstOrder) when sigma0 is given.
+#include <string>
+#include <vector>
+
+#include "network/network.hpp"
+#include "spectral/perron.hpp"
+
+namespace hmfnet {
+
+struct NetworkSummary {
+  NodeIndex n = 0;
+  EdgeOffset edges = 0;
+  EdgeOffset nnz = 0;
+  EdgeOffset self_loops = 0;
+  bool weighted = false;
+  double mean_degree = 0.0;
+  double max_degree = 0.0;
+  double rho = 0.0;
+  NodeIndex components = 0;
+  NodeIndex largest_component = 0;
+  bool bipartite = false;
+  double lambda = 0.0;
+  double lambda_residual = 0.0;
+  bool perron_nonnegative = true;
+  int eigen_iterations = 0;
+  double eigen_seconds = 0.0;
+  double G = 0.0;
+  double sigma0 = 0.0;  ///< 0: not given, Kc not computed
+  double Kc = 0.0;
+  /// Why the theory's assumptions fail here (disconnected, bipartite, sign-changing u); empty if
+  /// they hold.
+  std::vector<std::string> warnings;
+};
+
+/// Combines the structural facts with a Perron pair computed on the same network.
+NetworkSummary summarise(const Network& network, const PerronResult& perron, double sigma0 = 0.0);
+
+/// One JSON object (the CLI's `spectrum --json` output).
+std::string to_json(const NetworkSummary& summary);
+
+}  // namespace hmfnet

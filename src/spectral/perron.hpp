@@ -1,0 +1,34 @@
+#pragma once
+// The largest eigenvalue lambda of A and its Perron vector u (eq:criticalKFirstOrder needs
+// lambda; eq:globalOrderRInDeltaK needs u). Solved by Anasazi's block Krylov-Schur on the
+// distributed Tpetra matrix, asking for the largest *real* eigenvalue ("LR"): on a bipartite
+// network -lambda has the same magnitude, so "largest magnitude" could return it.
+#include <cstdint>
+#include <vector>
+
+#include "parallel/distributed_network.hpp"
+
+namespace hmfnet {
+
+struct PerronOptions {
+  double tolerance = 1e-10;  ///< Anasazi's relative residual tolerance ||Au - lambda u|| / |lambda|
+  int max_restarts = 1000;
+  int num_blocks = 24;       ///< Krylov basis size, >= 3
+};
+
+struct PerronResult {
+  double lambda = 0.0;
+  /// The whole vector on every rank, ||u||_2 = 1, sign chosen so that sum u > 0. Entries that are
+  /// negative only by round-off (>= -1e3 eps max|u|) are set to 0.
+  std::vector<double> u;
+  double residual = 0.0;  ///< ||A u - lambda u||_2 / |lambda|, recomputed here, not Anasazi's
+  bool nonnegative = true;  ///< false: u has entries of both signs (A reducible, lambda degenerate)
+  int iterations = 0;
+  double seconds = 0.0;
+};
+
+/// Collective. Throws ConvergenceError if Anasazi does not converge (never returns an
+/// unconverged pair), std::invalid_argument for a network without edges.
+PerronResult perron_eigenpair(const DistributedNetwork& network, const PerronOptions& options = {});
+
+}  // namespace hmfnet

@@ -1,0 +1,292 @@
+// hmfnet's HDF5 network file: exact round trips, and refusal (an InputError naming the file) of
+// files that are not HDF5, not ours, or whose CSR arrays were corrupted after writing.
+#include <catch2/catch.hpp>
+#include <cstdint>
+#include <hdf5.h>
+#include <limits>
+
+#include "io/hdf5_file.hpp"
+#include "io/network_hdf5.hpp"
+#include "support/io_helpers.hpp"
+
+using namespace hmfnet;
+using hmfnet::test::input_error_from;
+using hmfnet::test::require_input_error;
+using hmfnet::test::TempDirectory;
+using Catch::Matchers::Contains;
+
+namespace {
+
+// Overwrites the whole of an existing 1-D dataset of a valid file, as a bit flip or a buggy
+// external tool would, with the raw C API (no hmfnet code involved).
+template <class T>
+void overwrite_dataset(const std::string& path, const std::string& name, const std::vector<T>& v,
+                       hid_t mem_type) {
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  REQUIRE(file >= 0);
+  const hid_t set = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
+  REQUIRE(set >= 0);
+  const hid_t space = H5Dget_space(set);
+  hsize_t length = 0;
+  H5Sget_simple_extent_dims(space, &length, nullptr);
+  REQUIRE(length == v.size());
+  CHECK(H5Dwrite(set, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) >= 0);
+  H5Sclose(space);
+  H5Dclose(set);
+  H5Fclose(file);
+}
+
+void delete_object(const std::string& path, const std::string& name) {
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  REQUIRE(file >= 0);
+  CHECK(H5Ldelete(file, name.c_str(), H5P_DEFAULT) >= 0);
+  H5Fclose(file);
+}
+
+void set_int_attribute(const std::string& path, const std::string& object, const std::string& name,
+                       std::int64_t value) {
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  REQUIRE(file >= 0);
+  const hid_t where = H5Oopen(file, object.c_str(), H5P_DEFAULT);
+  REQUIRE(where >= 0);
+  const hid_t attr = H5Aopen(where, name.c_str(), H5P_DEFAULT);
+  REQUIRE(attr >= 0);
+  CHECK(H5Awrite(attr, H5T_NATIVE_INT64, &value) >= 0);
+  H5Aclose(attr);
+  H5Oclose(where);
+  H5Fclose(file);
+}
+
+// A small valid file of the unweighted test network, for the corruption tests.
+std::string valid_file(const TempDirectory& dir) {
+  const std::string path = dir.file("net.h5");
+  write_network_hdf5(path, test::unweighted_network_with_loops());
+  return path;
+}
+
+}  // namespace
+
+TEST_CASE("HDF5 network round trip is exact [0/1 with self-loops]", "[io][hdf5]") {
+  TempDirectory dir;
+  const Network net = test::unweighted_network_with_loops();
+  write_network_hdf5(dir.file("u.h5"), net, R"({"generator": "test"})");
+  CHECK(dir.listing() == std::vector<std::string>{"u.h5"});
+  const ReadResult r = read_network_hdf5(dir.file("u.h5"));
+  CHECK(r.warnings.empty());
+  test::require_same_network(r.network, net);
+
+  const Hdf5File file(dir.file("u.h5"), Hdf5File::Mode::read);
+  CHECK(file.string_attribute(file.id(), "hmfnet_format") == "network");
+  CHECK(file.int_attribute(file.id(), "format_version") == 1);
+  CHECK(file.string_attribute(file.id(), "provenance") == R"({"generator": "test"})");
+  const H5Id group = file.open_group("network");
+  CHECK(file.int_attribute(group.get(), "n") == net.size());
+  CHECK(file.int_attribute(group.get(), "nnz") == net.nnz());
+  CHECK(file.int_attribute(group.get(), "edges") == net.edges());
+  CHECK(file.int_attribute(group.get(), "self_loops") == 2);
+  CHECK(file.int_attribute(group.get(), "weighted") == 0);
+  CHECK_FALSE(file.exists("network/weights"));
+}
+
+TEST_CASE("HDF5 network round trip is exact [weighted with self-loops]", "[io][hdf5]") {
+  TempDirectory dir;
+  const Network net = test::awkward_weighted_network();
+  write_network_hdf5(dir.file("w.h5"), net);
+  const ReadResult r = read_network_hdf5(dir.file("w.h5"));
+  test::require_same_network(r.network, net);
+}
+
+TEST_CASE("HDF5 network writer replaces an existing file [overwrite]", "[io][hdf5]") {
+  TempDirectory dir;
+  write_network_hdf5(dir.file("o.h5"), test::awkward_weighted_network());
+  const Network net = test::unweighted_network_with_loops();
+  write_network_hdf5(dir.file("o.h5"), net);
+  test::require_same_network(read_network_hdf5(dir.file("o.h5")).network, net);
+  CHECK(dir.listing() == std::vector<std::string>{"o.h5"});
+}
+
+TEST_CASE("HDF5 network reader refuses a file that is not HDF5 [text file]", "[io][hdf5]") {
+  TempDirectory dir;
+  test::write_text(dir.file("text.h5"), "%%MatrixMarket matrix coordinate pattern symmetric\n");
+  const auto e = input_error_from([&] { read_network_hdf5(dir.file("text.h5")); });
+  require_input_error(e, dir.file("text.h5"), 0, "not an HDF5 file");
+}
+
+TEST_CASE("HDF5 network reader refuses a missing file [no file]", "[io][hdf5]") {
+  TempDirectory dir;
+  const auto e = input_error_from([&] { read_network_hdf5(dir.file("absent.h5")); });
+  require_input_error(e, dir.file("absent.h5"), 0, "not an HDF5 file (or cannot be read)");
+}
+
+TEST_CASE("HDF5 network reader refuses an HDF5 file without the hmfnet_format attribute "
+          "[foreign HDF5]",
+          "[io][hdf5]") {
+  TempDirectory dir;
+  const std::string path = dir.file("foreign.h5");
+  const hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  REQUIRE(file >= 0);
+  H5Gclose(H5Gcreate2(file, "network", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  H5Fclose(file);
+  const auto e = input_error_from([&] { read_network_hdf5(path); });
+  require_input_error(e, path, 0, "not an hmfnet network file");
+}
+
+TEST_CASE("HDF5 network reader refuses another hmfnet file kind and an unknown format version "
+          "[format]",
+          "[io][hdf5]") {
+  TempDirectory dir;
+  SECTION("hmfnet_format is not 'network'") {
+    const std::string path = dir.file("run.h5");
+    {
+      const Hdf5File file(path, Hdf5File::Mode::create);
+      file.set_attribute(file.id(), "hmfnet_format", std::string("trajectory"));
+    }
+    const auto e = input_error_from([&] { read_network_hdf5(path); });
+    require_input_error(e, path, 0, "not an hmfnet network file");
+  }
+  SECTION("format version 2") {
+    const std::string path = valid_file(dir);
+    set_int_attribute(path, "/", "format_version", 2);
+    const auto e = input_error_from([&] { read_network_hdf5(path); });
+    require_input_error(e, path, 0, "network format version 2 is not supported");
+  }
+}
+
+TEST_CASE("HDF5 network reader refuses a column index out of range written after the fact "
+          "[corrupted col]",
+          "[io][hdf5]") {
+  TempDirectory dir;
+  const std::string path = valid_file(dir);
+  std::vector<std::int32_t> cols = read_network_hdf5(path).network.cols();
+  cols.back() = 6;  // n = 6: one past the last node
+  overwrite_dataset(path, "/network/col", cols, H5T_NATIVE_INT32);
+  const auto e = input_error_from([&] { read_network_hdf5(path); });
+  require_input_error(e, path, 0, "/network: column index 6 in row 5 out of range [0,6)");
+}
+
+TEST_CASE("HDF5 network reader refuses a stored matrix that is not symmetric [corrupted col]",
+          "[io][hdf5]") {
+  TempDirectory dir;
+  const std::string path = valid_file(dir);
+  // Row 5 is {1, 4}; {2, 4} keeps it sorted and in range, but now (1,5) has no transpose.
+  std::vector<std::int32_t> cols = read_network_hdf5(path).network.cols();
+  REQUIRE(cols[cols.size() - 2] == 1);
+  cols[cols.size() - 2] = 2;
+  overwrite_dataset(path, "/network/col", cols, H5T_NATIVE_INT32);
+  const auto e = input_error_from([&] { read_network_hdf5(path); });
+  require_input_error(e, path, 0, "/network: entry (1,5) has no transpose (5,1)");
+}
+
+TEST_CASE("HDF5 network reader refuses row pointers that run past the column array "
+          "[corrupted row_ptr]",
+          "[io][hdf5]") {
+  TempDirectory dir;
+  SECTION("pointer one past the end in the middle, columns ascending to the end") {
+    // Two self-loops: col = {0, 1}, row_ptr = {0, 1, 2}. With row_ptr[1] = 3 row 0 claims
+    // col[0..3), whose entries ascend up to the end of the array: only a check of the pointers
+    // themselves stops a read of col[2], one past the end (found by valgrind before the fix).
+    const std::string path = dir.file("loops.h5");
+    write_network_hdf5(path, Network::from_undirected_edges(2, {{0, 0}, {1, 1}}));
+    overwrite_dataset<std::int64_t>(path, "/network/row_ptr", {0, 3, 2}, H5T_NATIVE_INT64);
+    const auto e = input_error_from([&] { read_network_hdf5(path); });
+    require_input_error(e, path, 0, "/network: row_ptr[1] = 3");
+  }
+  SECTION("huge pointer in the middle") {
+    const std::string path = valid_file(dir);
+    std::vector<std::int64_t> row_ptr = read_network_hdf5(path).network.row_ptr();
+    row_ptr[1] = std::numeric_limits<std::int64_t>::max() / 2;
+    overwrite_dataset(path, "/network/row_ptr", row_ptr, H5T_NATIVE_INT64);
+    const auto e = input_error_from([&] { read_network_hdf5(path); });
+    require_input_error(e, path, 0, "/network: row_ptr[1] = " + std::to_string(row_ptr[1]));
+  }
+  SECTION("decreasing pointers") {
+    const std::string path = valid_file(dir);
+    std::vector<std::int64_t> row_ptr = read_network_hdf5(path).network.row_ptr();
+    row_ptr[2] = row_ptr[1] - 1;
+    overwrite_dataset(path, "/network/row_ptr", row_ptr, H5T_NATIVE_INT64);
+    const auto e = input_error_from([&] { read_network_hdf5(path); });
+    require_input_error(e, path, 0, "/network: row_ptr");
+  }
+  SECTION("last pointer disagrees with the column count") {
+    const std::string path = valid_file(dir);
+    std::vector<std::int64_t> row_ptr = read_network_hdf5(path).network.row_ptr();
+    const auto nnz = row_ptr.back();
+    row_ptr.back() = nnz - 1;
+    overwrite_dataset(path, "/network/row_ptr", row_ptr, H5T_NATIVE_INT64);
+    const auto e = input_error_from([&] { read_network_hdf5(path); });
+    require_input_error(e, path, 0, "/network: row_ptr");
+  }
+}
+
+TEST_CASE("HDF5 network reader refuses a non-positive weight and a missing weights dataset "
+          "[corrupted weights]",
+          "[io][hdf5]") {
+  TempDirectory dir;
+  const std::string path = dir.file("w.h5");
+  write_network_hdf5(path, test::awkward_weighted_network());
+  SECTION("negative weight") {
+    std::vector<double> weights = read_network_hdf5(path).network.weights();
+    weights.front() = -1.0;
+    overwrite_dataset(path, "/network/weights", weights, H5T_NATIVE_DOUBLE);
+    const auto e = input_error_from([&] { read_network_hdf5(path); });
+    require_input_error(e, path, 0, "/network: entry (0,0) has weight -1.000000");
+  }
+  SECTION("NaN weight") {
+    std::vector<double> weights = read_network_hdf5(path).network.weights();
+    weights.front() = std::numeric_limits<double>::quiet_NaN();
+    overwrite_dataset(path, "/network/weights", weights, H5T_NATIVE_DOUBLE);
+    const auto e = input_error_from([&] { read_network_hdf5(path); });
+    require_input_error(e, path, 0, "(weights must be finite and > 0)");
+  }
+  SECTION("weights dataset deleted") {
+    delete_object(path, "/network/weights");
+    const auto e = input_error_from([&] { read_network_hdf5(path); });
+    require_input_error(e, path, 0, "missing dataset weights");
+  }
+}
+
+TEST_CASE("HDF5 network reader refuses a missing group or dataset and a wrong node count "
+          "[incomplete]",
+          "[io][hdf5]") {
+  TempDirectory dir;
+  const std::string path = valid_file(dir);
+  SECTION("no /network") {
+    delete_object(path, "/network");
+    const auto e = input_error_from([&] { read_network_hdf5(path); });
+    require_input_error(e, path, 0, "missing group network");
+  }
+  SECTION("no /network/col") {
+    delete_object(path, "/network/col");
+    const auto e = input_error_from([&] { read_network_hdf5(path); });
+    require_input_error(e, path, 0, "missing dataset col");
+  }
+  SECTION("node count disagrees with row_ptr") {
+    set_int_attribute(path, "/network", "n", 7);
+    const auto e = input_error_from([&] { read_network_hdf5(path); });
+    require_input_error(e, path, 0, "/network: row_ptr has 7 entries, expected n+1 = 8");
+  }
+  SECTION("negative node count") {
+    set_int_attribute(path, "/network", "n", -3);
+    const auto e = input_error_from([&] { read_network_hdf5(path); });
+    require_input_error(e, path, 0, "/network: node count -3 out of range");
+  }
+}
+
+TEST_CASE("HDF5 network reader refuses a file holding a network with no edges [empty]",
+          "[io][hdf5]") {
+  TempDirectory dir;
+  const std::string path = dir.file("empty.h5");
+  write_network_hdf5(path, Network::from_undirected_edges(3, {}));
+  const auto e = input_error_from([&] { read_network_hdf5(path); });
+  require_input_error(e, path, 0, "empty network: 3 nodes and no edges");
+}
+
+TEST_CASE("HDF5 network writer to a missing directory throws and creates nothing [no dir]",
+          "[io][hdf5]") {
+  TempDirectory dir;
+  const std::string path = dir.file("missing/net.h5");
+  const auto e = input_error_from(
+      [&] { write_network_hdf5(path, test::unweighted_network_with_loops()); });
+  require_input_error(e, path, 0, "does not exist");
+  CHECK(dir.listing().empty());
+}

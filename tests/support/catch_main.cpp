@@ -1,0 +1,3 @@
+// Catch2 runner for the tests that need no MPI.
+#define CATCH_CONFIG_MAIN
+#include <catch2/catch.hpp>

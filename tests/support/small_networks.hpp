@@ -1,0 +1,53 @@
+#pragma once
+// Networks with closed-form spectra for tests:
+//   star S_N            lambda = sqrt(N-1), bipartite
+//   complete K_N        lambda = N-1 (with self-loops: N)
+//   complete bipartite  K_{a,b}: lambda = sqrt(ab), bipartite
+//   ring / circulant    d-regular: lambda = d
+//   two disjoint cliques disconnected
+#include <utility>
+#include <vector>
+
+#include "network/network.hpp"
+
+namespace hmfnet::test {
+
+inline Network star(NodeIndex n) {
+  std::vector<std::pair<NodeIndex, NodeIndex>> e;
+  for (NodeIndex i = 1; i < n; ++i) e.emplace_back(0, i);
+  return Network::from_undirected_edges(n, e);
+}
+
+inline Network complete(NodeIndex n, bool self_loops = false) {
+  std::vector<std::pair<NodeIndex, NodeIndex>> e;
+  for (NodeIndex i = 0; i < n; ++i)
+    for (NodeIndex j = self_loops ? i : i + 1; j < n; ++j) e.emplace_back(i, j);
+  return Network::from_undirected_edges(n, e);
+}
+
+inline Network complete_bipartite(NodeIndex a, NodeIndex b) {
+  std::vector<std::pair<NodeIndex, NodeIndex>> e;
+  for (NodeIndex i = 0; i < a; ++i)
+    for (NodeIndex j = 0; j < b; ++j) e.emplace_back(i, a + j);
+  return Network::from_undirected_edges(a + b, e);
+}
+
+/// Circulant graph: node i linked to i +- 1, ..., i +- half_degree (mod n): 2*half_degree-regular.
+inline Network circulant(NodeIndex n, NodeIndex half_degree) {
+  std::vector<std::pair<NodeIndex, NodeIndex>> e;
+  for (NodeIndex i = 0; i < n; ++i)
+    for (NodeIndex s = 1; s <= half_degree; ++s) e.emplace_back(i, (i + s) % n);
+  return Network::from_undirected_edges(n, e);
+}
+
+/// Two cliques K_a and K_b with no edge between them.
+inline Network two_cliques(NodeIndex a, NodeIndex b) {
+  std::vector<std::pair<NodeIndex, NodeIndex>> e;
+  for (NodeIndex i = 0; i < a; ++i)
+    for (NodeIndex j = i + 1; j < a; ++j) e.emplace_back(i, j);
+  for (NodeIndex i = 0; i < b; ++i)
+    for (NodeIndex j = i + 1; j < b; ++j) e.emplace_back(a + i, a + j);
+  return Network::from_undirected_edges(a + b, e);
+}
+
+}  // namespace hmfnet::test
