@@ -7,13 +7,20 @@
 set(HMFNET_MPIEXEC ${MPIEXEC_EXECUTABLE})
 set(HMFNET_MPI_FLAGS --allow-run-as-root --oversubscribe)
 
+# CTest runs tests side by side (-j2 on 2 cores): OpenMP threads that spin while waiting would
+# then fight over the cores and slow small parallel regions down by 10-50x, so tests wait
+# passively. Tests that need a thread count set it themselves.
+set(HMFNET_TEST_ENVIRONMENT "OMP_WAIT_POLICY=PASSIVE")
+
 function(hmfnet_catch_tests target label timeout)
-  catch_discover_tests(${target} PROPERTIES LABELS ${label} TIMEOUT ${timeout})
+  catch_discover_tests(${target} PROPERTIES LABELS ${label} TIMEOUT ${timeout}
+                       ENVIRONMENT "${HMFNET_TEST_ENVIRONMENT}")
 endfunction()
 
 function(hmfnet_add_verification name timeout)
   add_test(NAME verification.${name} COMMAND ${ARGN})
-  set_tests_properties(verification.${name} PROPERTIES LABELS verification TIMEOUT ${timeout})
+  set_tests_properties(verification.${name} PROPERTIES LABELS verification TIMEOUT ${timeout}
+                       ENVIRONMENT "${HMFNET_TEST_ENVIRONMENT}")
 endfunction()
 
 function(hmfnet_add_verification_full name timeout)
@@ -24,10 +31,13 @@ endfunction()
 function(hmfnet_add_mpi_test name nranks timeout)
   add_test(NAME mpi.${name}
            COMMAND ${HMFNET_MPIEXEC} ${HMFNET_MPI_FLAGS} ${MPIEXEC_NUMPROC_FLAG} ${nranks} ${ARGN})
-  set_tests_properties(mpi.${name} PROPERTIES LABELS mpi TIMEOUT ${timeout} PROCESSORS ${nranks})
+  # One OpenMP thread per rank: the ranks already use the cores.
+  set_tests_properties(mpi.${name} PROPERTIES LABELS mpi TIMEOUT ${timeout} PROCESSORS ${nranks}
+                       ENVIRONMENT "OMP_NUM_THREADS=1;${HMFNET_TEST_ENVIRONMENT}")
 endfunction()
 
 function(hmfnet_add_cli_test name label timeout)
   add_test(NAME ${label}.${name} COMMAND ${ARGN})
-  set_tests_properties(${label}.${name} PROPERTIES LABELS ${label} TIMEOUT ${timeout})
+  set_tests_properties(${label}.${name} PROPERTIES LABELS ${label} TIMEOUT ${timeout}
+                       ENVIRONMENT "${HMFNET_TEST_ENVIRONMENT}")
 endfunction()

@@ -10,6 +10,7 @@ void add_generate_command(CLI::App& app);
 void add_rewire_command(CLI::App& app);
 void add_spectrum_command(CLI::App& app);
 void add_demo_command(CLI::App& app);
+void add_simulate_command(CLI::App& app);
 
 /// The command line as typed, for provenance records.
 const std::string& command_line();

@@ -135,6 +135,41 @@ std::vector<double> Hdf5File::read_double(hid_t where, const std::string& name) 
   return read_vector<double>(*this, where, name, n, H5T_NATIVE_DOUBLE);
 }
 
+void Hdf5File::write_matrix(hid_t where, const std::string& name, const std::vector<double>& v,
+                            std::size_t rows, std::size_t cols) const {
+  if (v.size() != rows * cols) fail("dataset " + name + ": size does not match its shape");
+  const hsize_t dims[2] = {length_of(rows), length_of(cols)};
+  H5Id space(H5Screate_simple(2, dims, nullptr), H5Sclose);
+  H5Id set(H5Dcreate2(where, name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT,
+                      H5P_DEFAULT),
+           H5Dclose);
+  if (set.get() < 0) fail("cannot create dataset " + name);
+  if (!v.empty() &&
+      H5Dwrite(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0) {
+    fail("cannot write dataset " + name);
+  }
+}
+
+std::vector<double> Hdf5File::read_matrix(hid_t where, const std::string& name, std::size_t& rows,
+                                          std::size_t& cols) const {
+  if (H5Lexists(where, name.c_str(), H5P_DEFAULT) <= 0) fail("missing dataset " + name);
+  H5Id set(H5Dopen2(where, name.c_str(), H5P_DEFAULT), H5Dclose);
+  H5Id type(H5Dget_type(set.get()), H5Tclose);
+  if (H5Tget_class(type.get()) != H5T_FLOAT) fail("dataset " + name + " is not floating point");
+  H5Id space(H5Dget_space(set.get()), H5Sclose);
+  if (H5Sget_simple_extent_ndims(space.get()) != 2) fail("dataset " + name + " is not 2-D");
+  hsize_t dims[2] = {0, 0};
+  H5Sget_simple_extent_dims(space.get(), dims, nullptr);
+  rows = static_cast<std::size_t>(dims[0]);
+  cols = static_cast<std::size_t>(dims[1]);
+  std::vector<double> v(rows * cols);
+  if (!v.empty() &&
+      H5Dread(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0) {
+    fail("cannot read dataset " + name);
+  }
+  return v;
+}
+
 namespace {
 void write_scalar_attribute(const Hdf5File& f, hid_t where, const std::string& name, hid_t type,
                             const void* value) {

@@ -46,6 +46,13 @@ class Hdf5File {
   std::vector<std::int32_t> read_int32(hid_t where, const std::string& name) const;
   std::vector<double> read_double(hid_t where, const std::string& name) const;
 
+  /// 2-D row-major dataset rows x cols (HDF5 keeps C order, so h5py reads it as [rows, cols]).
+  void write_matrix(hid_t where, const std::string& name, const std::vector<double>& v,
+                    std::size_t rows, std::size_t cols) const;
+  /// Reads a 2-D double dataset; rows and cols are set from its shape.
+  std::vector<double> read_matrix(hid_t where, const std::string& name, std::size_t& rows,
+                                  std::size_t& cols) const;
+
   // Scalar attributes.
   void set_attribute(hid_t where, const std::string& name, const std::string& value) const;
   void set_attribute(hid_t where, const std::string& name, std::int64_t value) const;

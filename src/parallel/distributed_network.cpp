@@ -2,6 +2,7 @@
 
 #include <Teuchos_CommHelpers.hpp>
 #include <algorithm>
+#include <utility>
 #include <Tpetra_Core.hpp>
 
 #include "parallel/distributed_network_impl.hpp"
@@ -47,6 +48,7 @@ DistributedNetwork::DistributedNetwork(const Network& network) : m_impl(std::mak
   m_impl->map = Teuchos::rcp(
       new TpetraMap(static_cast<Tpetra::global_size_t>(network.size()), 0, comm));
   m_impl->matrix = assemble(network, m_impl->map);
+  m_impl->weighted = network.weighted();
 }
 
 DistributedNetwork::~DistributedNetwork() = default;
@@ -92,6 +94,64 @@ std::vector<double> DistributedNetwork::gather(const std::vector<double>& x_loca
   Teuchos::reduceAll(*m_impl->map->getComm(), Teuchos::REDUCE_SUM, static_cast<int>(n),
                      mine.data(), all.data());
   return all;
+}
+
+}  // namespace hmfnet
+
+namespace hmfnet {
+
+DistributedNetwork::LocalAdjacency DistributedNetwork::local_adjacency() const {
+  const auto& matrix = *m_impl->matrix;
+  const auto col_map = matrix.getColMap();
+  LocalAdjacency a;
+  a.columns = static_cast<NodeIndex>(col_map->getNodeNumElements());
+  a.row_ptr.assign(1, 0);
+  std::vector<std::pair<GlobalOrdinal, std::pair<NodeIndex, double>>> row;
+  const auto rows = static_cast<LocalOrdinal>(local_size());
+  for (LocalOrdinal r = 0; r < rows; ++r) {
+    TpetraMatrix::local_inds_host_view_type indices;
+    TpetraMatrix::values_host_view_type values;
+    matrix.getLocalRowView(r, indices, values);
+    row.clear();
+    for (size_t k = 0; k < indices.extent(0); ++k) {
+      row.push_back({col_map->getGlobalElement(indices(k)), {indices(k), values(k)}});
+    }
+    // Global column order, so every rank count sums a row in the same order as the serial CSR.
+    std::sort(row.begin(), row.end(),
+              [](const auto& x, const auto& y) { return x.first < y.first; });
+    for (const auto& entry : row) {
+      a.cols.push_back(entry.second.first);
+      if (m_impl->weighted) a.weights.push_back(entry.second.second);
+    }
+    a.row_ptr.push_back(static_cast<EdgeOffset>(a.cols.size()));
+  }
+  return a;
+}
+
+void DistributedNetwork::import_columns(const double* owned, int width, double* columns) const {
+  const auto col_map = m_impl->matrix->getColMap();
+  if (m_impl->row_to_columns.is_null()) {
+    m_impl->row_to_columns = Teuchos::rcp(new TpetraImport(m_impl->map, col_map));
+  }
+  const auto w = static_cast<size_t>(width);
+  auto& impl = *m_impl;
+  if (impl.import_source.is_null() || impl.import_source->getNumVectors() != w) {
+    impl.import_source = Teuchos::rcp(new TpetraMultiVector(impl.map, w));
+    impl.import_target = Teuchos::rcp(new TpetraMultiVector(col_map, w));
+  }
+  TpetraMultiVector& source = *impl.import_source;
+  TpetraMultiVector& target = *impl.import_target;
+  const auto n_owned = static_cast<size_t>(local_size());
+  {
+    auto view = source.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (size_t r = 0; r < n_owned; ++r)
+      for (size_t c = 0; c < w; ++c) view(r, c) = owned[r * w + c];
+  }
+  target.doImport(source, *m_impl->row_to_columns, Tpetra::INSERT);
+  const auto view = target.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const size_t n_columns = col_map->getNodeNumElements();
+  for (size_t r = 0; r < n_columns; ++r)
+    for (size_t c = 0; c < w; ++c) columns[r * w + c] = view(r, c);
 }
 
 }  // namespace hmfnet

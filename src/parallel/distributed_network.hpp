@@ -35,6 +35,22 @@ class DistributedNetwork {
   /// The full vector on every rank from each rank's block. Collective.
   std::vector<double> gather(const std::vector<double>& x_local) const;
 
+  /// This rank's rows as a plain CSR whose column indices point into the *column space*: the
+  /// owned rows' values and the ghost values of remote neighbours, laid out as import_columns
+  /// fills them. Rows in the same order as the owned block; columns sorted within a row by
+  /// global index (the same summation order on every rank count). `weights` empty: 0/1 network.
+  struct LocalAdjacency {
+    std::vector<EdgeOffset> row_ptr;
+    std::vector<NodeIndex> cols;
+    std::vector<double> weights;
+    NodeIndex columns = 0;  ///< size of the column space
+  };
+  LocalAdjacency local_adjacency() const;
+
+  /// Fills the column space from the owned block: `owned` is local_size() x width row-major,
+  /// `columns` is LocalAdjacency::columns x width row-major. Collective (one Tpetra Import).
+  void import_columns(const double* owned, int width, double* columns) const;
+
   struct Impl;
   const Impl& impl() const { return *m_impl; }
 

@@ -2,6 +2,7 @@
 // Private: the Tpetra types behind DistributedNetwork. Include only from .cpp files that need
 // Trilinos (each such translation unit costs ~15 s and ~0.6 GB to compile).
 #include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Import.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_MultiVector.hpp>
 
@@ -16,9 +17,15 @@ using TpetraOperator = Tpetra::Operator<double>;
 using GlobalOrdinal = TpetraMap::global_ordinal_type;
 using LocalOrdinal = TpetraMap::local_ordinal_type;
 
+using TpetraImport = Tpetra::Import<>;
+
 struct DistributedNetwork::Impl {
   Teuchos::RCP<const TpetraMap> map;
   Teuchos::RCP<TpetraMatrix> matrix;
+  bool weighted = false;
+  Teuchos::RCP<const TpetraImport> row_to_columns;  // built on first import_columns
+  // Reused across steps (allocated again only when the width changes).
+  Teuchos::RCP<TpetraMultiVector> import_source, import_target;
 };
 
 }  // namespace hmfnet

@@ -9,14 +9,12 @@ namespace hmfnet {
 
 namespace {
 
-// Kokkos prints its own option list when it sees --help/-h; the CLI owns those, so Kokkos and
-// MPI get a copy of the arguments without them.
-std::vector<char*> without_help(int argc, char** argv) {
+// Kokkos reads options of its own from the command line (--help, --threads, --numa, --device,
+// --kokkos-*) and aborts on forms it dislikes ("--threads 2"); those names belong to our CLI, so
+// Kokkos and MPI get the program name only.
+std::vector<char*> program_name_only(int argc, char** argv) {
   std::vector<char*> kept;
-  for (int k = 0; k < argc; ++k) {
-    const std::string arg = argv[k];
-    if (arg != "--help" && arg != "-h" && arg != "--help-all") kept.push_back(argv[k]);
-  }
+  if (argc > 0) kept.push_back(argv[0]);
   kept.push_back(nullptr);
   return kept;
 }
@@ -25,7 +23,7 @@ std::vector<char*> without_help(int argc, char** argv) {
 
 struct ParallelSession::Guard {
   Guard(int argc, char** argv)
-      : args(without_help(argc, argv)),
+      : args(program_name_only(argc, argv)),
         count(static_cast<int>(args.size()) - 1),
         data(args.data()),
         scope(&count, &data) {}
@@ -56,6 +54,14 @@ double ParallelSession::max(double local) {
   Teuchos::reduceAll(*Tpetra::getDefaultComm(), Teuchos::REDUCE_MAX, local,
                      Teuchos::outArg(global));
   return global;
+}
+
+void ParallelSession::sum_in_place(std::vector<double>& values) {
+  if (values.empty() || ranks() == 1) return;
+  std::vector<double> global(values.size());
+  Teuchos::reduceAll(*Tpetra::getDefaultComm(), Teuchos::REDUCE_SUM,
+                     static_cast<int>(values.size()), values.data(), global.data());
+  values.swap(global);
 }
 
 }  // namespace hmfnet

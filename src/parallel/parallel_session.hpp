@@ -3,6 +3,7 @@
 // Create one in main() before any distributed object and let it outlive them all: without it,
 // `mpirun -np 2` silently runs two independent serial copies (TOOLCHAIN.md).
 #include <memory>
+#include <vector>
 
 namespace hmfnet {
 
@@ -19,6 +20,8 @@ class ParallelSession {
   /// Sum / max over all ranks (identity on one rank).
   static double sum(double local);
   static double max(double local);
+  /// Element-wise sum over ranks, in place (one reduction for the whole vector).
+  static void sum_in_place(std::vector<double>& values);
 
  private:
   struct Guard;

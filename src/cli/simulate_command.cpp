@@ -1,0 +1,246 @@
+// `hmfnet simulate`: the paper's protocol (Sec. numericalExperiments) on a network file.
+#include <omp.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <cmath>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli/commands.hpp"
+#include "cli/provenance.hpp"
+#include "cli/read_flags.hpp"
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "dynamics/network_force.hpp"
+#include "dynamics/rank_one_force.hpp"
+#include "dynamics/run_file.hpp"
+#include "dynamics/simulation.hpp"
+#include "parallel/distributed_network.hpp"
+#include "parallel/parallel_session.hpp"
+#include "spectral/perron.hpp"
+#include "theory/critical_coupling.hpp"
+
+namespace hmfnet::cli {
+
+namespace {
+
+struct SimulateFlags {
+  std::string input;
+  double sigma0 = 0.35;
+  double omega = 6.0;
+  std::vector<double> K, K_over_Kc;
+  std::string sweep;
+  double h = 0.01, T = 1000.0, transient = 500.0;
+  std::uint64_t seed = 0;
+  int replicas = 1;
+  int threads = 0;
+  std::string output, checkpoint, force = "auto";
+  bool resume = false, json = false, quiet = false, node_data = false, restart_each_K = false;
+  int record_stride = 100;
+  double energy_tolerance = 1e-2;
+  ReadFlags read;
+};
+
+// "START:STOP:STEP" -> START, START+STEP, ... <= STOP (+ half a step of slack for round-off).
+std::vector<double> parse_sweep(const std::string& text) {
+  std::vector<double> v;
+  std::stringstream in(text);
+  std::string part;
+  while (std::getline(in, part, ':')) {
+    try {
+      std::size_t used = 0;
+      v.push_back(std::stod(part, &used));
+      if (used != part.size()) throw std::invalid_argument(part);
+    } catch (const std::exception&) {
+      throw ParameterError("--K-sweep", text, "START:STOP:STEP with numbers");
+    }
+  }
+  if (v.size() != 3 || !(v[2] > 0) || !(v[1] >= v[0])) {
+    throw ParameterError("--K-sweep", text, "START:STOP:STEP with STEP > 0 and STOP >= START");
+  }
+  std::vector<double> K;
+  for (int k = 0; v[0] + k * v[2] <= v[1] + 0.5 * v[2]; ++k) K.push_back(v[0] + k * v[2]);
+  return K;
+}
+
+std::unique_ptr<CouplingForce> choose_force(const SimulateFlags& f, const Network& net,
+                                            const DistributedNetwork& distributed) {
+  if (f.force != "sparse") {
+    auto structure = detect_rank_one(net);
+    if (structure) {
+      return std::make_unique<RankOneForce>(std::move(*structure), distributed.first_row(),
+                                            distributed.local_size());
+    }
+    if (f.force == "rank-one") {
+      throw ParameterError("--force", "rank-one", "only for A = a a^T networks (see --help)");
+    }
+  }
+  return std::make_unique<NetworkForce>(distributed);
+}
+
+SimulationParameters parameters(const SimulateFlags& f, double Kc) {
+  SimulationParameters p;
+  p.h = f.h;
+  p.duration = f.T;
+  p.transient = f.transient;
+  if (!f.K.empty()) p.K = f.K;
+  for (const double r : f.K_over_Kc) p.K.push_back(r * Kc);
+  if (!f.sweep.empty()) p.K = parse_sweep(f.sweep);
+  p.continue_state = !f.restart_each_K;
+  p.replicas.clear();
+  for (int b = 0; b < f.replicas; ++b) {
+    p.replicas.push_back({f.omega, f.sigma0, f.seed + static_cast<std::uint64_t>(b)});
+  }
+  p.record_stride = f.record_stride;
+  p.energy_tolerance = f.energy_tolerance;
+  p.node_data = f.node_data;
+  p.checkpoint_path = f.checkpoint;
+  p.resume = f.resume;
+  p.progress = !f.quiet && !f.json && ::isatty(2);
+  return p;
+}
+
+nlohmann::json point_json(const PointResult& p, double Kc) {
+  const double B = static_cast<double>(p.R_mean.size());
+  double mean = 0.0, var = 0.0, err = 0.0, drift = 0.0;
+  for (std::size_t b = 0; b < p.R_mean.size(); ++b) {
+    mean += p.R_mean[b] / B;
+    var += p.R_sem[b] * p.R_sem[b] / (B * B);
+    err = std::max(err, p.energy_rel_error_max[b]);
+    drift = std::max(drift, p.momentum_drift[b]);
+  }
+  return {{"K", p.K},
+          {"K_over_Kc", p.K / Kc},
+          {"R_mean", mean},
+          {"R_sem", std::sqrt(var)},
+          {"R_mean_replicas", p.R_mean},
+          {"R_sem_replicas", p.R_sem},
+          {"energy_rel_error_max", err},
+          {"momentum_drift", drift}};
+}
+
+void run(const SimulateFlags& f) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  if (f.threads > 0) {
+    omp_set_num_threads(f.threads);
+  } else if (ParallelSession::ranks() > 1 && std::getenv("OMP_NUM_THREADS") == nullptr) {
+    // Default "all cores" shared by the ranks (assumed on one machine; set --threads otherwise).
+    omp_set_num_threads(std::max(1, omp_get_num_procs() / ParallelSession::ranks()));
+  }
+  if (!f.output.empty()) require_writable_destination(f.output);
+  if (!f.checkpoint.empty()) require_writable_destination(f.checkpoint);
+  const Network net = f.read.read(f.input);
+  const DistributedNetwork distributed(net);
+  const PerronResult perron = perron_eigenpair(distributed);
+  const double Kc = critical_coupling(f.sigma0, net.size(), perron.lambda);
+  const SimulationParameters params = parameters(f, Kc);
+  auto force = choose_force(f, net, distributed);
+  const SimulationResult result = simulate(distributed, net.degrees(), *force, params);
+
+  nlohmann::json out;
+  out["n"] = net.size();
+  out["nnz"] = net.nnz();
+  out["lambda"] = perron.lambda;
+  out["Kc"] = Kc;
+  out["force"] = result.force_name;
+  out["integrator"] = params.integrator;
+  out["steps"] = result.steps;
+  out["integration_seconds"] = result.integration_seconds;
+  out["nnz_steps_per_second"] = static_cast<double>(result.nnz_per_evaluation) *
+                                static_cast<double>(result.steps) / result.integration_seconds;
+  out["resumed"] = result.resumed;
+  for (const auto& p : result.points) out["points"].push_back(point_json(p, Kc));
+  if (!f.output.empty()) {
+    nlohmann::json provenance_params = {
+        {"input", f.input},   {"sigma0", f.sigma0},     {"omega", f.omega},
+        {"seed", f.seed},     {"replicas", f.replicas}, {"h", f.h},
+        {"T", f.T},           {"transient", f.transient}, {"K", params.K},
+        {"continue_state", params.continue_state}};
+    RunMetadata meta;
+    meta.parameters_json = provenance_params.dump();
+    meta.network_json = nlohmann::json{{"n", net.size()},     {"nnz", net.nnz()},
+                                       {"edges", net.edges()}, {"lambda", perron.lambda},
+                                       {"Kc", Kc}}
+                            .dump();
+    nlohmann::json prov = nlohmann::json::parse(provenance("simulate", provenance_params));
+    prov["ranks"] = ParallelSession::ranks();
+    prov["threads"] = omp_get_max_threads();
+    prov["wall_seconds"] =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    meta.provenance_json = prov.dump();
+    meta.Kc = Kc;
+    if (is_root()) write_run_file(f.output, result, params, meta);
+  }
+  if (!is_root()) return;
+  if (f.json) {
+    std::cout << out.dump() << std::endl;
+    return;
+  }
+  std::cout << "N = " << net.size() << ", nnz = " << net.nnz() << ", lambda = " << perron.lambda
+            << ", K_c = " << Kc << " (" << result.force_name << " force, "
+            << out["nnz_steps_per_second"].get<double>() / 1e9 << " Gnnz*steps/s)\n"
+            << "       K    K/K_c     <R>_t       sem   max dE/E  P drift\n";
+  for (const auto& p : out["points"]) {
+    std::printf("%8.4g %8.4f %9.5f %9.2e %10.2e %8.1e\n", p["K"].get<double>(),
+                p["K_over_Kc"].get<double>(), p["R_mean"].get<double>(), p["R_sem"].get<double>(),
+                p["energy_rel_error_max"].get<double>(), p["momentum_drift"].get<double>());
+  }
+}
+
+}  // namespace
+
+void add_simulate_command(CLI::App& app) {
+  static SimulateFlags f;
+  auto* c = app.add_subcommand("simulate",
+                               "Integrate the HMF rotors on a network over a schedule of K "
+                               "(the paper's protocol: each K continues from the current state)");
+  c->add_option("input", f.input, "Network file (.mtx, .h5, edge list)")->required();
+  c->add_option("--sigma0", f.sigma0, "Std of the initial Gaussian momenta (default 0.35)")
+      ->check(CLI::PositiveNumber);
+  c->add_option("--omega", f.omega, "Mean of the initial momenta (default 6)");
+  auto* k = c->add_option("--K", f.K, "Couplings, comma separated")->delimiter(',');
+  auto* kr = c->add_option("--K-over-Kc", f.K_over_Kc,
+                           "Couplings as multiples of K_c = 2 sigma0^2 N / lambda")
+                 ->delimiter(',');
+  auto* ks = c->add_option("--K-sweep", f.sweep, "START:STOP:STEP (the paper's sweep)");
+  k->excludes(kr)->excludes(ks);
+  kr->excludes(ks);
+  c->add_option("--h", f.h, "Time step (default 0.01)")->check(CLI::PositiveNumber);
+  c->add_option("--T", f.T, "Time per K, T2 (default 1000)")->check(CLI::PositiveNumber);
+  c->add_option("--transient", f.transient, "Discarded start of each K, T1 (default 500)")
+      ->check(CLI::NonNegativeNumber);
+  c->add_option("--seed", f.seed, "Random seed of the initial state")->required();
+  c->add_option("--replicas", f.replicas, "Independent replicas (seeds seed..seed+B-1)")
+      ->check(CLI::Range(1, 64));
+  c->add_option("--threads", f.threads,
+                "OpenMP threads per rank (default: all cores, shared by the ranks)")
+      ->check(CLI::Range(1, 1024));
+  c->add_option("-o,--output", f.output, "Results file (HDF5)");
+  c->add_option("--checkpoint", f.checkpoint, "Checkpoint file, written every few seconds");
+  c->add_flag("--resume", f.resume, "Continue from --checkpoint if it exists");
+  c->add_flag("--json", f.json, "One JSON object on stdout");
+  c->add_flag("--quiet", f.quiet, "No progress line");
+  c->add_flag("--node-data", f.node_data, "Record <R_n>_t and Omega_n per node and K");
+  c->add_flag("--restart-each-K", f.restart_each_K, "Each K starts from the initial state");
+  c->add_option("--record-stride", f.record_stride, "Steps between time-series records")
+      ->check(CLI::Range(1, 1000000000));
+  c->add_option("--energy-tolerance", f.energy_tolerance,
+                "Stop when the relative energy error exceeds this (default 1e-2)")
+      ->check(CLI::PositiveNumber);
+  c->add_option("--force", f.force, "auto (rank-one fast path when A = a a^T), sparse, rank-one")
+      ->check(CLI::IsMember({"auto", "sparse", "rank-one"}));
+  f.read.add_to(c);
+  c->callback([] {
+    if (f.K.empty() && f.K_over_Kc.empty() && f.sweep.empty()) {
+      throw CLI::RequiredError("one of --K, --K-over-Kc or --K-sweep");
+    }
+    if (f.resume && f.checkpoint.empty()) throw CLI::RequiredError("--checkpoint with --resume");
+    run(f);
+  });
+}
+
+}  // namespace hmfnet::cli

@@ -1,0 +1,36 @@
+#pragma once
+// The coupling force of eq:dMomentum_dT per unit K, and the sums the observables need, from one
+// evaluation. With y_n = sum_m A_nm e^{i theta_m} (so R_n = |y_n| / N, eq:localOrderParam):
+//   g_n = (1/N) sum_m A_nm sin(theta_m - theta_n) = (cos theta_n Im y_n - sin theta_n Re y_n) / N,
+//   p'_n = K g_n,
+//   sum_n |y_n|                      -> R = sum_n |y_n| / sum_n d_n       (eq:globalOrderParam)
+//   sum_n Re(e^{-i theta_n} y_n)     -> U = -(K / 2N) * that               (potential energy)
+// The sums are over this rank's rows and summed in an order that does not depend on the thread
+// count; the caller reduces them over ranks.
+#include <vector>
+
+#include "dynamics/rotor_state.hpp"
+
+namespace hmfnet {
+
+struct ForceSums {
+  std::vector<double> order;     ///< per replica: sum_n |y_n|
+  std::vector<double> coupling;  ///< per replica: sum_n Re(e^{-i theta_n} y_n)
+};
+
+class CouplingForce {
+ public:
+  virtual ~CouplingForce() = default;
+  /// g (rows x replicas, row-major) at the phases of `state`, and the local sums. Collective
+  /// when the network is distributed.
+  virtual void evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) = 0;
+  /// Stored entries of A this rank reads per evaluation (for throughput figures).
+  virtual EdgeOffset work_per_evaluation() const = 0;
+  /// Short name for logs and output files ("sparse", "rank-one").
+  virtual const char* name() const = 0;
+  /// y_n = sum_m A_nm e^{i theta_m} of the last evaluation, rows x replicas x [Re, Im]
+  /// (R_n = |y_n| / N, psi_n = arg y_n: eq:localOrderParam).
+  virtual const std::vector<double>& local_fields() const = 0;
+};
+
+}  // namespace hmfnet

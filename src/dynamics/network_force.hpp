@@ -1,0 +1,39 @@
+#pragma once
+// The general coupling force on a sparse network, one fused pass per evaluation
+// (eq:dMomentum_dT_orderParam): sin and cos once per rotor, the ghost values of remote
+// neighbours through one Tpetra Import, then per row the sum over neighbours of the interleaved
+// [cos, sin] pairs of every replica, then g and the observable terms. OpenMP over rows with a
+// static schedule: each row is summed by one thread in CSR order, so results are bit-identical
+// for any thread count; 1 and 2 ranks agree to round-off (the remote columns are the same
+// numbers, sums over rows are split differently).
+#include <vector>
+
+#include "dynamics/coupling_force.hpp"
+#include "parallel/distributed_network.hpp"
+
+namespace hmfnet {
+
+class NetworkForce : public CouplingForce {
+ public:
+  /// Keeps a reference to `network`, which must outlive this object.
+  explicit NetworkForce(const DistributedNetwork& network);
+
+  void evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) override;
+  EdgeOffset work_per_evaluation() const override {
+    return static_cast<EdgeOffset>(m_adjacency.cols.size());
+  }
+  const char* name() const override { return "sparse"; }
+  const std::vector<double>& local_fields() const override { return m_y; }
+
+ private:
+  const DistributedNetwork& m_network;
+  DistributedNetwork::LocalAdjacency m_adjacency;
+  double m_inverse_n;
+  std::vector<double> m_owned_cs;   // rows x replicas x [cos, sin]
+  std::vector<double> m_column_cs;  // columns x replicas x [cos, sin]
+  std::vector<double> m_y;          // rows x replicas x [Re y, Im y]
+  std::vector<double> m_abs_y;      // rows x replicas
+  std::vector<double> m_coupling;   // rows x replicas
+};
+
+}  // namespace hmfnet

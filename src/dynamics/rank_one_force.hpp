@@ -1,0 +1,43 @@
+#pragma once
+// O(N) coupling force for rank-one networks A = a a^T (the disordered HMF of Restrepo & Meiss
+// 2014; a = 1 is the all-to-all HMF of Antoni & Ruffo 1995), optionally without the diagonal
+// (the complete graph without self-loops, A = a a^T - diag(a^2)). Then
+//   y_n = sum_m A_nm e^{i theta_m} = a_n Z - [no diagonal] a_n^2 e^{i theta_n},
+//   Z = sum_m a_m e^{i theta_m}  (one global sum, reduced over ranks),
+// and g, |y_n| and the coupling term follow as in the sparse kernel. Chosen automatically when
+// detect_rank_one finds the structure, and checked against the sparse path in tests.
+#include <optional>
+#include <vector>
+
+#include "dynamics/coupling_force.hpp"
+
+namespace hmfnet {
+
+struct RankOneStructure {
+  std::vector<double> a;   ///< the whole vector (every rank)
+  bool diagonal = true;    ///< A_nn = a_n^2 stored; false: no self-loops
+};
+
+/// The rank-one structure of `network`, if it has one: every row full (N entries with the
+/// diagonal, N-1 without), and every stored A_nm = a_n a_m to 1e-12 relative. Weighted networks
+/// without a diagonal are not recognised (a is then not determined by the diagonal), nor are
+/// networks with N < 3. O(nnz) = O(N^2).
+std::optional<RankOneStructure> detect_rank_one(const Network& network);
+
+class RankOneForce : public CouplingForce {
+ public:
+  RankOneForce(RankOneStructure structure, NodeIndex first_row, NodeIndex rows);
+  void evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) override;
+  EdgeOffset work_per_evaluation() const override { return m_rows; }
+  const char* name() const override { return "rank-one"; }
+  const std::vector<double>& local_fields() const override { return m_y; }
+
+ private:
+  RankOneStructure m_structure;
+  NodeIndex m_first_row;
+  NodeIndex m_rows;
+  double m_inverse_n;
+  std::vector<double> m_y, m_abs_y, m_coupling;
+};
+
+}  // namespace hmfnet

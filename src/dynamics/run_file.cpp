@@ -1,0 +1,117 @@
+#include "dynamics/run_file.hpp"
+
+#include "core/atomic_file.hpp"
+#include "hmfnet/version.hpp"
+
+namespace hmfnet {
+
+namespace {
+
+std::vector<double> stack(const std::vector<PointResult>& points,
+                          std::vector<double> PointResult::*field) {
+  std::vector<double> out;
+  for (const auto& p : points) out.insert(out.end(), (p.*field).begin(), (p.*field).end());
+  return out;
+}
+
+void unstack(std::vector<PointResult>& points, std::vector<double> PointResult::*field,
+             const std::vector<double>& data, std::size_t per_point) {
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const auto first = data.begin() + static_cast<std::ptrdiff_t>(k * per_point);
+    (points[k].*field).assign(first, first + static_cast<std::ptrdiff_t>(per_point));
+  }
+}
+
+const std::pair<const char*, std::vector<double> PointResult::*> k_per_replica[] = {
+    {"R_mean", &PointResult::R_mean},
+    {"R_sem", &PointResult::R_sem},
+    {"energy_rel_error_max", &PointResult::energy_rel_error_max},
+    {"momentum_drift", &PointResult::momentum_drift}};
+
+const std::pair<const char*, std::vector<double> PointResult::*> k_per_node[] = {
+    {"R_node", &PointResult::R_node}, {"omega_node", &PointResult::omega_node}};
+
+}  // namespace
+
+void write_results(const Hdf5File& f, const std::vector<PointResult>& points,
+                   const TimeSeries& series, int replicas) {
+  const auto w = static_cast<std::size_t>(replicas);
+  const H5Id pg = f.create_group("points");
+  std::vector<double> K;
+  for (const auto& p : points) K.push_back(p.K);
+  f.write(pg.get(), "K", K);
+  for (const auto& [name, field] : k_per_replica) {
+    f.write_matrix(pg.get(), name, stack(points, field), points.size(), w);
+  }
+  for (const auto& [name, field] : k_per_node) {
+    const auto data = stack(points, field);
+    if (!data.empty()) f.write_matrix(pg.get(), name, data, data.size() / w, w);
+  }
+  const H5Id tg = f.create_group("timeseries");
+  f.write(tg.get(), "t", series.t);
+  f.write(tg.get(), "K", series.K);
+  f.write_matrix(tg.get(), "R", series.R, series.t.size(), w);
+  f.write_matrix(tg.get(), "energy", series.energy, series.t.size(), w);
+  f.write_matrix(tg.get(), "momentum", series.momentum, series.t.size(), w);
+}
+
+void read_results(const Hdf5File& f, std::vector<PointResult>& points, TimeSeries& series,
+                  int replicas) {
+  const auto w = static_cast<std::size_t>(replicas);
+  const H5Id pg = f.open_group("points");
+  const std::vector<double> K = f.read_double(pg.get(), "K");
+  points.assign(K.size(), PointResult{});
+  for (std::size_t k = 0; k < K.size(); ++k) points[k].K = K[k];
+  std::size_t rows = 0, cols = 0;
+  for (const auto& [name, field] : k_per_replica) {
+    unstack(points, field, f.read_matrix(pg.get(), name, rows, cols), w);
+  }
+  for (const auto& [name, field] : k_per_node) {
+    if (!f.exists(std::string("points/") + name)) continue;
+    const auto data = f.read_matrix(pg.get(), name, rows, cols);
+    if (!points.empty()) unstack(points, field, data, data.size() / points.size());
+  }
+  const H5Id tg = f.open_group("timeseries");
+  series.t = f.read_double(tg.get(), "t");
+  series.K = f.read_double(tg.get(), "K");
+  series.R = f.read_matrix(tg.get(), "R", rows, cols);
+  series.energy = f.read_matrix(tg.get(), "energy", rows, cols);
+  series.momentum = f.read_matrix(tg.get(), "momentum", rows, cols);
+}
+
+void write_run_file(const std::string& path, const SimulationResult& result,
+                    const SimulationParameters& params, const RunMetadata& meta) {
+  AtomicFile out(path);
+  {
+    const Hdf5File f(out.temp_path(), Hdf5File::Mode::create);
+    const hid_t root = f.id();
+    f.set_attribute(root, "hmfnet_format", std::string("simulation"));
+    f.set_attribute(root, "format_version", std::int64_t{1});
+    f.set_attribute(root, "hmfnet_version", std::string(k_version));
+    f.set_attribute(root, "git_commit", std::string(k_git_commit));
+    f.set_attribute(root, "parameters", meta.parameters_json);
+    f.set_attribute(root, "network", meta.network_json);
+    f.set_attribute(root, "provenance", meta.provenance_json);
+    f.set_attribute(root, "integrator", params.integrator);
+    f.set_attribute(root, "force", result.force_name);
+    f.set_attribute(root, "h", params.h);
+    f.set_attribute(root, "duration", params.duration);
+    f.set_attribute(root, "transient", params.transient);
+    f.set_attribute(root, "replicas", static_cast<std::int64_t>(params.replicas.size()));
+    f.set_attribute(root, "steps", result.steps);
+    f.set_attribute(root, "force_evaluations", result.force_evaluations);
+    f.set_attribute(root, "integration_seconds", result.integration_seconds);
+    write_results(f, result.points, result.series, static_cast<int>(params.replicas.size()));
+    if (meta.Kc > 0.0) {
+      const H5Id pg = f.open_group("points");
+      std::vector<double> ratio;
+      for (const auto& p : result.points) ratio.push_back(p.K / meta.Kc);
+      f.write(pg.get(), "K_over_Kc", ratio);
+      f.set_attribute(root, "Kc", meta.Kc);
+    }
+    f.flush();
+  }
+  out.commit();
+}
+
+}  // namespace hmfnet

@@ -1,0 +1,35 @@
+#pragma once
+// The results file of `hmfnet simulate` (schema in docs/simulation_output.md), and the results
+// groups it shares with checkpoints:
+//   /points/K, /points/K_over_Kc                     [points]
+//   /points/R_mean, R_sem, energy_rel_error_max,
+//           momentum_drift                           [points x replicas]
+//   /points/R_node, /points/omega_node              [points * N x replicas] (node data only)
+//   /timeseries/t, /timeseries/K                     [records]
+//   /timeseries/R, energy, momentum                  [records x replicas]
+#include <string>
+#include <vector>
+
+#include "dynamics/simulation.hpp"
+#include "io/hdf5_file.hpp"
+
+namespace hmfnet {
+
+void write_results(const Hdf5File& file, const std::vector<PointResult>& points,
+                   const TimeSeries& series, int replicas);
+void read_results(const Hdf5File& file, std::vector<PointResult>& points, TimeSeries& series,
+                  int replicas);
+
+/// What a results file records besides the results.
+struct RunMetadata {
+  std::string parameters_json;  ///< every parameter, seeds included
+  std::string network_json;     ///< network summary (n, nnz, lambda, Kc, ...)
+  std::string provenance_json;  ///< version, commit, command line, ranks, threads, wall time
+  double Kc = 0.0;              ///< 0: unknown
+};
+
+/// Writes to a temporary and renames: an interrupted run leaves no file under `path`.
+void write_run_file(const std::string& path, const SimulationResult& result,
+                    const SimulationParameters& params, const RunMetadata& meta);
+
+}  // namespace hmfnet

@@ -1,0 +1,92 @@
+#pragma once
+// The paper's simulation protocol (Sec. numericalExperiments): rotors start with theta uniform in
+// [0, 2 pi) and p ~ Gaussian(Omega, sigma0); for each coupling K of a schedule the system is
+// integrated for T time units continuing from the current state, the first T1 are discarded and
+// <R>_t (eq:timeAverage, eq:globalOrderParam) is averaged over the rest. Recorded on a stride:
+// R(t), the energy H (eq:hamiltonianNetworkCase) and the total momentum (both conserved).
+//
+// B replicas (seeds, sigma0, Omega) run side by side in one pass over the network. A run can be
+// checkpointed and resumed bit-identically; a blow-up (NaN or energy error above a tolerance)
+// stops it with the likely cause.
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "dynamics/coupling_force.hpp"
+#include "dynamics/integrator.hpp"
+#include "dynamics/rotor_state.hpp"
+#include "parallel/distributed_network.hpp"
+
+namespace hmfnet {
+
+struct SimulationParameters {
+  double h = 0.01;           ///< time step, > 0
+  double duration = 1000.0;  ///< T2: time per K, > transient
+  double transient = 500.0;  ///< T1: discarded at the start of each K, >= 0
+  std::vector<double> K;     ///< the schedule, each >= 0
+  /// true: the paper's protocol, each K continues from the state left by the previous one;
+  /// false: each K restarts from the initial condition.
+  bool continue_state = true;
+  std::vector<InitialCondition> replicas{InitialCondition{}};
+  int record_stride = 100;          ///< steps between time-series records
+  int batches = 20;                 ///< batch means for the SEM of <R>_t
+  double energy_tolerance = 1e-2;   ///< stop when |E - E0| / |E0| exceeds this
+  bool node_data = false;           ///< per-node <R_n>_t and Omega_n over [T1, T2]
+  std::string integrator = "leapfrog";
+  std::string checkpoint_path;      ///< empty: no checkpoints
+  double checkpoint_seconds = 5.0;  ///< wall time between checkpoints (also at each K's end)
+  bool resume = false;              ///< continue from checkpoint_path if it exists
+  bool progress = false;            ///< progress line on stderr (root rank)
+  /// Stop after this many steps in this session, as an interruption would (0: never). For
+  /// fault-injection tests of checkpoint/resume; not part of the fingerprint.
+  std::int64_t stop_after_steps = 0;
+};
+
+/// Throws ParameterError naming the first parameter out of range.
+void validate(const SimulationParameters& params);
+
+struct PointResult {
+  double K = 0.0;
+  std::vector<double> R_mean, R_sem;           ///< per replica
+  std::vector<double> energy_rel_error_max;    ///< per replica, over the whole segment
+  std::vector<double> momentum_drift;          ///< per replica: max |P(t) - P(0)| / sum |p_n(0)|
+  std::vector<double> R_node;                  ///< N x replicas: <R_n>_t (node_data)
+  std::vector<double> omega_node;              ///< N x replicas: Omega_n (node_data)
+};
+
+struct TimeSeries {
+  std::vector<double> t, K;                 ///< per record (t: time since the run started)
+  std::vector<double> R, energy, momentum;  ///< records x replicas
+};
+
+struct SimulationResult {
+  std::vector<PointResult> points;
+  TimeSeries series;
+  std::int64_t steps = 0;
+  std::int64_t force_evaluations = 0;
+  double integration_seconds = 0.0;  ///< the stepping loop only (no set-up, no I/O)
+  EdgeOffset nnz_per_evaluation = 0;  ///< summed over ranks
+  std::string force_name;
+  bool resumed = false;
+  bool interrupted = false;  ///< stopped by stop_after_steps: points are incomplete
+};
+
+/// NaN/Inf or an energy error beyond the tolerance.
+class SimulationBlowUp : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Runs the schedule. Collective over ranks: `network` is the distributed matrix and `force`
+/// evaluates the coupling on this rank's rows. Throws SimulationBlowUp (checkpoint kept),
+/// ParameterError, InputError (checkpoint unreadable or from other parameters).
+SimulationResult simulate(const DistributedNetwork& network, const std::vector<double>& degrees,
+                          CouplingForce& force, const SimulationParameters& params);
+
+/// A JSON fingerprint of everything that determines the trajectory; a checkpoint is only resumed
+/// by a run with the same fingerprint.
+std::string fingerprint(const SimulationParameters& params, const DistributedNetwork& network);
+
+}  // namespace hmfnet

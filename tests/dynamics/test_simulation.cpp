@@ -1,0 +1,228 @@
+// The simulation protocol: agreement with a serial reference on any rank count, replicas,
+// checkpoint/resume, the rank-one fast path, the blow-up guard.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <filesystem>
+
+#include "core/error.hpp"
+#include "dynamics/network_force.hpp"
+#include "dynamics/rank_one_force.hpp"
+#include "dynamics/simulation.hpp"
+#include "network/erdos_renyi.hpp"
+#include "parallel/distributed_network.hpp"
+#include "parallel/parallel_session.hpp"
+#include "support/small_networks.hpp"
+
+using namespace hmfnet;
+
+namespace {
+
+// Plain serial leap-frog on the whole network, written from eq:dMomentum_dT directly.
+void reference_steps(const Network& net, std::vector<double>& theta, std::vector<double>& p,
+                     double K, double h, int steps) {
+  const auto n = static_cast<std::size_t>(net.size());
+  std::vector<double> g(n);
+  const auto force = [&] {
+    for (NodeIndex i = 0; i < net.size(); ++i) {
+      double sum = 0.0;
+      for (EdgeOffset k = net.row_begin(i); k < net.row_end(i); ++k) {
+        sum += net.weight(k) * std::sin(theta[std::size_t(net.col(k))] - theta[std::size_t(i)]);
+      }
+      g[std::size_t(i)] = sum / static_cast<double>(n);
+    }
+  };
+  force();
+  for (int s = 0; s < steps; ++s) {
+    for (std::size_t i = 0; i < n; ++i) p[i] += 0.5 * h * K * g[i];
+    for (std::size_t i = 0; i < n; ++i) theta[i] += h * p[i];
+    force();
+    for (std::size_t i = 0; i < n; ++i) p[i] += 0.5 * h * K * g[i];
+  }
+}
+
+RotorState run_steps(CouplingForce& force, RotorState s, double K, double h, int steps) {
+  ForceEvaluation f(force);
+  f.update(s);
+  const LeapFrog lf;
+  for (int k = 0; k < steps; ++k) lf.step(s, h, {K}, f);
+  return s;
+}
+
+SimulationParameters short_run() {
+  SimulationParameters p;
+  p.h = 0.02;
+  p.duration = 4.0;
+  p.transient = 1.0;
+  p.K = {20.0, 60.0, 120.0};
+  p.record_stride = 10;
+  p.replicas = {{6.0, 1.0, 11}};
+  return p;
+}
+
+std::string temp_path(const std::string& name) {
+  return (std::filesystem::temp_directory_path() /
+          (name + "_ranks" + std::to_string(ParallelSession::ranks()) + ".h5"))
+      .string();
+}
+
+}  // namespace
+
+TEST_CASE("Distributed leap-frog matches a serial reference to 1e-12 on any rank count [ER N=400]",
+          "[simulation]") {
+  const Network net = erdos_renyi({400, 0.05, 2});
+  const DistributedNetwork d(net);
+  NetworkForce force(d);
+  const RotorState s0 = initial_state(d.first_row(), d.local_size(), {{6.0, 1.0, 5}});
+  const RotorState s = run_steps(force, s0, 80.0, 0.01, 200);
+  const RotorState all0 = initial_state(0, net.size(), {{6.0, 1.0, 5}});
+  std::vector<double> theta = all0.theta, p = all0.p;
+  reference_steps(net, theta, p, 80.0, 0.01, 200);
+  const std::vector<double> got_theta = d.gather(s.theta), got_p = d.gather(s.p);
+  double worst = 0.0;
+  for (std::size_t k = 0; k < theta.size(); ++k) {
+    worst = std::max({worst, std::abs(got_theta[k] - theta[k]), std::abs(got_p[k] - p[k])});
+  }
+  INFO("ranks " << ParallelSession::ranks() << ": max deviation " << worst);
+  REQUIRE(worst < 1e-12);
+}
+
+TEST_CASE("Rank-one fast path equals the sparse path to 1e-12 [weighted a a^T and K_N]",
+          "[simulation]") {
+  const NodeIndex n = 120;
+  std::vector<double> a(static_cast<std::size_t>(n));
+  for (std::size_t i = 0; i < a.size(); ++i) a[i] = 0.5 + 0.01 * double(i % 37);
+  const Network full = test::complete(n, true);
+  std::vector<double> w(std::size_t(full.nnz()));
+  for (NodeIndex i = 0; i < n; ++i)
+    for (EdgeOffset k = full.row_begin(i); k < full.row_end(i); ++k)
+      w[std::size_t(k)] = a[std::size_t(i)] * a[std::size_t(full.col(k))];
+  const Network weighted = Network::from_csr(n, full.row_ptr(), full.cols(), w);
+  const Network unweighted = test::complete(n, false);
+  for (const Network* net : {&weighted, &unweighted}) {
+    auto structure = detect_rank_one(*net);
+    REQUIRE(structure.has_value());
+    const DistributedNetwork d(*net);
+    NetworkForce sparse(d);
+    RankOneForce fast(*structure, d.first_row(), d.local_size());
+    const RotorState s0 = initial_state(d.first_row(), d.local_size(), {{6.0, 1.0, 3}});
+    const RotorState a1 = run_steps(sparse, s0, 30.0, 0.01, 300);
+    const RotorState a2 = run_steps(fast, s0, 30.0, 0.01, 300);
+    double worst = 0.0;
+    for (std::size_t k = 0; k < a1.p.size(); ++k) {
+      worst = std::max({worst, std::abs(a1.theta[k] - a2.theta[k]), std::abs(a1.p[k] - a2.p[k])});
+    }
+    INFO("max |sparse - rank-one| = " << worst);
+    REQUIRE(worst < 1e-12);
+  }
+  REQUIRE_FALSE(detect_rank_one(erdos_renyi({100, 0.5, 1})).has_value());
+}
+
+TEST_CASE("B replicas in one pass equal B separate runs bit for bit [ER N=300 B=3]",
+          "[simulation]") {
+  const Network net = erdos_renyi({300, 0.05, 4});
+  const DistributedNetwork d(net);
+  NetworkForce force(d);
+  SimulationParameters together = short_run();
+  together.replicas = {{6.0, 1.0, 11}, {6.0, 0.5, 12}, {5.0, 1.0, 13}};
+  const SimulationResult joint = simulate(d, net.degrees(), force, together);
+  for (std::size_t b = 0; b < 3; ++b) {
+    SimulationParameters alone = together;
+    alone.replicas = {together.replicas[b]};
+    const SimulationResult single = simulate(d, net.degrees(), force, alone);
+    for (std::size_t k = 0; k < single.points.size(); ++k) {
+      REQUIRE(single.points[k].R_mean[0] == joint.points[k].R_mean[b]);
+      REQUIRE(single.points[k].R_sem[0] == joint.points[k].R_sem[b]);
+      REQUIRE(single.points[k].energy_rel_error_max[0] == joint.points[k].energy_rel_error_max[b]);
+    }
+    for (std::size_t r = 0; r < single.series.t.size(); ++r) {
+      REQUIRE(single.series.energy[r] == joint.series.energy[r * 3 + b]);
+    }
+  }
+}
+
+TEST_CASE("Checkpoint and resume end bit-identical to an uninterrupted run [ER N=300]",
+          "[simulation]") {
+  const Network net = erdos_renyi({300, 0.05, 6});
+  const DistributedNetwork d(net);
+  NetworkForce force(d);
+  SimulationParameters p = short_run();
+  p.node_data = true;
+  const SimulationResult whole = simulate(d, net.degrees(), force, p);
+
+  p.checkpoint_path = temp_path("hmfnet_test_checkpoint");
+  if (ParallelSession::rank() == 0) std::filesystem::remove(p.checkpoint_path);
+  ParallelSession::max(0.0);
+  p.checkpoint_seconds = 0.0;  // a checkpoint at every record
+  for (const std::int64_t stop : {170, 260, 0}) {  // interrupted twice, then to the end
+    p.stop_after_steps = stop;
+    p.resume = true;
+    const SimulationResult part = simulate(d, net.degrees(), force, p);
+    REQUIRE(part.interrupted == (stop != 0));
+    if (stop != 0) continue;
+    REQUIRE(part.resumed);
+    REQUIRE(part.points.size() == whole.points.size());
+    for (std::size_t k = 0; k < whole.points.size(); ++k) {
+      REQUIRE(part.points[k].R_mean == whole.points[k].R_mean);
+      REQUIRE(part.points[k].R_sem == whole.points[k].R_sem);
+      REQUIRE(part.points[k].energy_rel_error_max == whole.points[k].energy_rel_error_max);
+      REQUIRE(part.points[k].omega_node == whole.points[k].omega_node);
+      REQUIRE(part.points[k].R_node == whole.points[k].R_node);
+    }
+    REQUIRE(part.series.t == whole.series.t);
+    REQUIRE(part.series.energy == whole.series.energy);
+    REQUIRE(part.steps == whole.steps);
+    REQUIRE(part.force_evaluations == whole.force_evaluations);
+  }
+  if (ParallelSession::rank() == 0) std::filesystem::remove(p.checkpoint_path);
+}
+
+TEST_CASE("A checkpoint of other parameters is refused with the reason", "[simulation]") {
+  const Network net = erdos_renyi({200, 0.05, 6});
+  const DistributedNetwork d(net);
+  NetworkForce force(d);
+  SimulationParameters p = short_run();
+  p.checkpoint_path = temp_path("hmfnet_test_foreign_checkpoint");
+  p.checkpoint_seconds = 0.0;
+  p.stop_after_steps = 50;
+  simulate(d, net.degrees(), force, p);
+  p.stop_after_steps = 0;
+  p.resume = true;
+  p.K = {25.0};
+  REQUIRE_THROWS_WITH(simulate(d, net.degrees(), force, p), Catch::Contains("fingerprints differ"));
+  ParallelSession::max(0.0);
+  if (ParallelSession::rank() == 0) std::filesystem::remove(p.checkpoint_path);
+}
+
+TEST_CASE("A step far too large for K stops the run naming K / t and the stable step",
+          "[simulation]") {
+  const Network net = erdos_renyi({200, 0.1, 6});
+  const DistributedNetwork d(net);
+  NetworkForce force(d);
+  SimulationParameters p = short_run();
+  p.h = 0.5;
+  p.duration = 100.0;
+  p.transient = 10.0;
+  p.K = {4000.0};
+  REQUIRE_THROWS_AS(simulate(d, net.degrees(), force, p), SimulationBlowUp);
+  try {
+    simulate(d, net.degrees(), force, p);
+  } catch (const SimulationBlowUp& e) {
+    INFO(e.what());
+    REQUIRE_THAT(e.what(), Catch::Contains("K = 4000") && Catch::Contains("h < "));
+  }
+}
+
+TEST_CASE("Simulation parameters are range-checked with the allowed range", "[simulation]") {
+  SimulationParameters p = short_run();
+  p.h = 0.0;
+  REQUIRE_THROWS_WITH(validate(p), Catch::Contains("h > 0"));
+  p = short_run();
+  p.transient = p.duration;
+  REQUIRE_THROWS_WITH(validate(p), Catch::Contains("T > transient"));
+  p = short_run();
+  p.K = {-1.0};
+  REQUIRE_THROWS_AS(validate(p), ParameterError);
+  p = short_run();
+  p.replicas[0].sigma0 = 0.0;
+  REQUIRE_THROWS_AS(validate(p), ParameterError);
+}
