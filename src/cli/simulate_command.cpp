@@ -15,6 +15,7 @@
 #include "cli/read_flags.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "dynamics/integrator.hpp"
 #include "dynamics/network_force.hpp"
 #include "dynamics/rank_one_force.hpp"
 #include "dynamics/run_file.hpp"
@@ -38,10 +39,12 @@ struct SimulateFlags {
   std::uint64_t seed = 0;
   int replicas = 1;
   int threads = 0;
-  std::string output, checkpoint, force = "auto";
+  std::string output, checkpoint, force = "auto", integrator = "leapfrog";
   bool resume = false, json = false, quiet = false, node_data = false, restart_each_K = false;
   int record_stride = 100;
   double energy_tolerance = 1e-2;
+  int rotor_node = 0;
+  int phase_bins = 72;
   ReadFlags read;
 };
 
@@ -98,6 +101,9 @@ SimulationParameters parameters(const SimulateFlags& f, double Kc) {
   p.record_stride = f.record_stride;
   p.energy_tolerance = f.energy_tolerance;
   p.node_data = f.node_data;
+  p.integrator = f.integrator;
+  p.rotor_node = f.rotor_node;
+  p.phase_bins = f.phase_bins;
   p.checkpoint_path = f.checkpoint;
   p.resume = f.resume;
   p.progress = !f.quiet && !f.json && ::isatty(2);
@@ -133,6 +139,7 @@ void run(const SimulateFlags& f) {
   }
   if (!f.output.empty()) require_writable_destination(f.output);
   if (!f.checkpoint.empty()) require_writable_destination(f.checkpoint);
+  make_integrator(f.integrator);  // unknown names fail here, before any work
   const Network net = f.read.read(f.input);
   const DistributedNetwork distributed(net);
   const PerronResult perron = perron_eigenpair(distributed);
@@ -224,13 +231,22 @@ void add_simulate_command(CLI::App& app) {
   c->add_flag("--resume", f.resume, "Continue from --checkpoint if it exists");
   c->add_flag("--json", f.json, "One JSON object on stdout");
   c->add_flag("--quiet", f.quiet, "No progress line");
-  c->add_flag("--node-data", f.node_data, "Record <R_n>_t and Omega_n per node and K");
+  c->add_flag("--node-data", f.node_data,
+              "Per node and K: <R_n>_t, Omega_n, r_n, the fluctuation terms, the psi_n - psi_1 "
+              "histogram and one rotor's (theta_bar, p_bar) samples (docs/simulation_output.md)");
+  c->add_option("--rotor-node", f.rotor_node, "--node-data: the rotor sampled (default 0)")
+      ->check(CLI::NonNegativeNumber);
+  c->add_option("--phase-bins", f.phase_bins, "--node-data: histogram bins (default 72)")
+      ->check(CLI::Range(1, 100000));
   c->add_flag("--restart-each-K", f.restart_each_K, "Each K starts from the initial state");
   c->add_option("--record-stride", f.record_stride, "Steps between time-series records")
       ->check(CLI::Range(1, 1000000000));
   c->add_option("--energy-tolerance", f.energy_tolerance,
                 "Stop when the relative energy error exceeds this (default 1e-2)")
       ->check(CLI::PositiveNumber);
+  c->add_option("--integrator", f.integrator,
+                "leapfrog (default; the paper's), yoshida4, blanes_moan (4th-order symplectic), "
+                "rk4 (non-symplectic contrast)");
   c->add_option("--force", f.force, "auto (rank-one fast path when A = a a^T), sparse, rank-one")
       ->check(CLI::IsMember({"auto", "sparse", "rank-one"}));
   f.read.add_to(c);

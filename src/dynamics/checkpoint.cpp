@@ -42,6 +42,8 @@ void write_checkpoint(const std::string& path, const Checkpoint& c) {
     write_vector(f, root, "momentum_drift_max", c.momentum_drift_max);
     write_vector(f, root, "theta_T1", c.theta_T1);
     write_vector(f, root, "R_node_sum", c.R_node_sum);
+    write_vector(f, root, "node_rows", c.node_rows);
+    write_vector(f, root, "node_globals", c.node_globals);
     write_results(f, c.points, c.series, c.replicas);
     f.flush();
   }
@@ -79,6 +81,8 @@ Checkpoint read_checkpoint(const std::string& path) {
   c.momentum_drift_max = f.read_double(root, "momentum_drift_max");
   c.theta_T1 = f.read_double(root, "theta_T1");
   c.R_node_sum = f.read_double(root, "R_node_sum");
+  c.node_rows = f.read_double(root, "node_rows");
+  c.node_globals = f.read_double(root, "node_globals");
   read_results(f, c.points, c.series, c.replicas);
   return c;
 }

@@ -24,6 +24,8 @@ struct Checkpoint {
   std::vector<double> batch_sums;
   std::vector<double> energy0, momentum0, momentum_scale, energy_err_max, momentum_drift_max;
   std::vector<double> theta_T1, R_node_sum;  ///< N x replicas, node_data only
+  std::vector<double> node_rows;     ///< N x 6, node_data only (NodeStatistics::row_state)
+  std::vector<double> node_globals;  ///< summed over ranks (NodeStatistics::global_state)
   std::vector<PointResult> points;
   TimeSeries series;
 };

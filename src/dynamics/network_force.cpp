@@ -23,40 +23,89 @@ struct RowKernelArgs {
 };
 
 // Replica count B fixed at compile time so the inner loops unroll and vectorise; `runtime_b`
-// serves other counts. Weighted is a template flag so the 0/1 loop reads no values.
+// serves other counts. Weighted is a template flag so the 0/1 loop reads no values. Each replica
+// is summed exactly as rows_kernel_single sums one (four accumulators by k mod 4, combined as
+// (a0 + a1) + (a2 + a3)), so B replicas in one pass equal B separate runs bit for bit.
 template <int B, bool Weighted>
 void rows_kernel(const RowKernelArgs& a, NodeIndex rows, int runtime_b) {
   const int nb = B > 0 ? B : runtime_b;
   constexpr int kMax = 64;
 #pragma omp parallel for schedule(static)
   for (NodeIndex r = 0; r < rows; ++r) {
-    double yc[kMax], ys[kMax];
-    for (int b = 0; b < nb; ++b) yc[b] = ys[b] = 0.0;
-    for (EdgeOffset k = a.row_ptr[r]; k < a.row_ptr[r + 1]; ++k) {
+    double acc[4][2 * kMax];
+    for (int j = 0; j < 4; ++j)
+      for (int b = 0; b < 2 * nb; ++b) acc[j][b] = 0.0;
+    const EdgeOffset end = a.row_ptr[r + 1];
+    EdgeOffset k = a.row_ptr[r];
+    for (; k + 4 <= end; k += 4) {
+      for (int j = 0; j < 4; ++j) {
+        const double* q = a.column_cs + 2 * static_cast<std::ptrdiff_t>(a.cols[k + j]) * nb;
+        const double w = Weighted ? a.weights[k + j] : 1.0;
+        for (int b = 0; b < 2 * nb; ++b) acc[j][b] += w * q[b];
+      }
+    }
+    for (; k < end; ++k) {
       const double* q = a.column_cs + 2 * static_cast<std::ptrdiff_t>(a.cols[k]) * nb;
       const double w = Weighted ? a.weights[k] : 1.0;
-      for (int b = 0; b < nb; ++b) {
-        yc[b] += w * q[2 * b];
-        ys[b] += w * q[2 * b + 1];
-      }
+      for (int b = 0; b < 2 * nb; ++b) acc[0][b] += w * q[b];
     }
     const double* o = a.owned_cs + 2 * static_cast<std::ptrdiff_t>(r) * nb;
     const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(r) * nb;
     for (int b = 0; b < nb; ++b) {
+      const double yc = (acc[0][2 * b] + acc[1][2 * b]) + (acc[2][2 * b] + acc[3][2 * b]);
+      const double ys =
+          (acc[0][2 * b + 1] + acc[1][2 * b + 1]) + (acc[2][2 * b + 1] + acc[3][2 * b + 1]);
       const double c = o[2 * b], s = o[2 * b + 1];
-      a.g[base + b] = a.inverse_n * (c * ys[b] - s * yc[b]);
-      a.y[2 * (base + b)] = yc[b];
-      a.y[2 * (base + b) + 1] = ys[b];
-      a.abs_y[base + b] = std::sqrt(yc[b] * yc[b] + ys[b] * ys[b]);
-      a.coupling[base + b] = c * yc[b] + s * ys[b];
+      a.g[base + b] = a.inverse_n * (c * ys - s * yc);
+      a.y[2 * (base + b)] = yc;
+      a.y[2 * (base + b) + 1] = ys;
+      a.abs_y[base + b] = std::sqrt(yc * yc + ys * ys);
+      a.coupling[base + b] = c * yc + s * ys;
     }
+  }
+}
+
+// One replica: four independent [cos, sin] accumulators per row break the floating-point add
+// dependency chain (one add latency per neighbour otherwise). The order of the additions is
+// fixed by the CSR row, so results remain identical for any thread or rank count.
+template <bool Weighted>
+void rows_kernel_single(const RowKernelArgs& a, NodeIndex rows) {
+#pragma omp parallel for schedule(static)
+  for (NodeIndex r = 0; r < rows; ++r) {
+    double c0 = 0, s0 = 0, c1 = 0, s1 = 0, c2 = 0, s2 = 0, c3 = 0, s3 = 0;
+    EdgeOffset k = a.row_ptr[r];
+    const EdgeOffset end = a.row_ptr[r + 1];
+    const auto at = [&](EdgeOffset j) { return a.column_cs + 2 * static_cast<std::ptrdiff_t>(a.cols[j]); };
+    const auto w = [&](EdgeOffset j) { return Weighted ? a.weights[j] : 1.0; };
+    for (; k + 4 <= end; k += 4) {
+      const double *q0 = at(k), *q1 = at(k + 1), *q2 = at(k + 2), *q3 = at(k + 3);
+      c0 += w(k) * q0[0];
+      s0 += w(k) * q0[1];
+      c1 += w(k + 1) * q1[0];
+      s1 += w(k + 1) * q1[1];
+      c2 += w(k + 2) * q2[0];
+      s2 += w(k + 2) * q2[1];
+      c3 += w(k + 3) * q3[0];
+      s3 += w(k + 3) * q3[1];
+    }
+    for (; k < end; ++k) {
+      c0 += w(k) * at(k)[0];
+      s0 += w(k) * at(k)[1];
+    }
+    const double yc = (c0 + c1) + (c2 + c3), ys = (s0 + s1) + (s2 + s3);
+    const double c = a.owned_cs[2 * r], s = a.owned_cs[2 * r + 1];
+    a.g[r] = a.inverse_n * (c * ys - s * yc);
+    a.y[2 * r] = yc;
+    a.y[2 * r + 1] = ys;
+    a.abs_y[r] = std::sqrt(yc * yc + ys * ys);
+    a.coupling[r] = c * yc + s * ys;
   }
 }
 
 template <bool Weighted>
 void dispatch(const RowKernelArgs& a, NodeIndex rows, int b) {
   switch (b) {
-    case 1: rows_kernel<1, Weighted>(a, rows, b); break;
+    case 1: rows_kernel_single<Weighted>(a, rows); break;
     case 2: rows_kernel<2, Weighted>(a, rows, b); break;
     case 4: rows_kernel<4, Weighted>(a, rows, b); break;
     case 8: rows_kernel<8, Weighted>(a, rows, b); break;
@@ -69,7 +118,8 @@ void dispatch(const RowKernelArgs& a, NodeIndex rows, int b) {
 NetworkForce::NetworkForce(const DistributedNetwork& network)
     : m_network(network),
       m_adjacency(network.local_adjacency()),
-      m_inverse_n(1.0 / static_cast<double>(network.global_size())) {}
+      m_inverse_n(1.0 / static_cast<double>(network.global_size())),
+      m_identity_import(network.columns_are_owned_rows()) {}
 
 void NetworkForce::evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) {
   const int nb = state.replicas;
@@ -79,9 +129,13 @@ void NetworkForce::evaluate(const RotorState& state, std::vector<double>& g, For
   for (std::size_t k = 0; k < cells; ++k) {
     ::sincos(state.theta[k], &m_owned_cs[2 * k + 1], &m_owned_cs[2 * k]);  // one call: both
   }
-  m_column_cs.resize(2 * static_cast<std::size_t>(m_adjacency.columns) *
-                     static_cast<std::size_t>(nb));
-  m_network.import_columns(m_owned_cs.data(), 2 * nb, m_column_cs.data());
+  const double* column_cs = m_owned_cs.data();
+  if (!m_identity_import) {
+    m_column_cs.resize(2 * static_cast<std::size_t>(m_adjacency.columns) *
+                       static_cast<std::size_t>(nb));
+    m_network.import_columns(m_owned_cs.data(), 2 * nb, m_column_cs.data());
+    column_cs = m_column_cs.data();
+  }
   g.resize(cells);
   m_y.resize(2 * cells);
   m_abs_y.resize(cells);
@@ -89,7 +143,7 @@ void NetworkForce::evaluate(const RotorState& state, std::vector<double>& g, For
   const RowKernelArgs args{m_adjacency.row_ptr.data(),
                            m_adjacency.cols.data(),
                            m_adjacency.weights.empty() ? nullptr : m_adjacency.weights.data(),
-                           m_column_cs.data(),
+                           column_cs,
                            m_owned_cs.data(),
                            m_inverse_n,
                            g.data(),

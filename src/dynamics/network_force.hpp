@@ -29,6 +29,7 @@ class NetworkForce : public CouplingForce {
   const DistributedNetwork& m_network;
   DistributedNetwork::LocalAdjacency m_adjacency;
   double m_inverse_n;
+  bool m_identity_import;           // one rank: the column space is the owned block
   std::vector<double> m_owned_cs;   // rows x replicas x [cos, sin]
   std::vector<double> m_column_cs;  // columns x replicas x [cos, sin]
   std::vector<double> m_y;          // rows x replicas x [Re y, Im y]

@@ -31,6 +31,28 @@ const std::pair<const char*, std::vector<double> PointResult::*> k_per_replica[]
 const std::pair<const char*, std::vector<double> PointResult::*> k_per_node[] = {
     {"R_node", &PointResult::R_node}, {"omega_node", &PointResult::omega_node}};
 
+// Replica-0 vectors of the same length at every point: stored [points x length].
+const std::pair<const char*, std::vector<double> PointResult::*> k_per_point_vector[] = {
+    {"r_node", &PointResult::r_node},
+    {"fluctuation", &PointResult::fluctuation},
+    {"synchronised", &PointResult::synchronised},
+    {"phase_histogram", &PointResult::phase_histogram},
+    {"rotor_theta_bar", &PointResult::rotor_theta_bar},
+    {"rotor_p_bar", &PointResult::rotor_p_bar},
+    {"frame", &PointResult::frame}};
+
+// Per-point arrays present only with node data: [points * rows x cols], split evenly by point.
+template <class Table>
+void read_optional(const Hdf5File& f, hid_t group, std::vector<PointResult>& points,
+                   const Table& table) {
+  for (const auto& [name, field] : table) {
+    if (!f.exists(std::string("points/") + name) || points.empty()) continue;
+    std::size_t rows = 0, cols = 0;
+    const auto data = f.read_matrix(group, name, rows, cols);
+    unstack(points, field, data, data.size() / points.size());
+  }
+}
+
 }  // namespace
 
 void write_results(const Hdf5File& f, const std::vector<PointResult>& points,
@@ -46,6 +68,10 @@ void write_results(const Hdf5File& f, const std::vector<PointResult>& points,
   for (const auto& [name, field] : k_per_node) {
     const auto data = stack(points, field);
     if (!data.empty()) f.write_matrix(pg.get(), name, data, data.size() / w, w);
+  }
+  for (const auto& [name, field] : k_per_point_vector) {
+    const auto data = stack(points, field);
+    if (!data.empty()) f.write_matrix(pg.get(), name, data, points.size(), data.size() / points.size());
   }
   const H5Id tg = f.create_group("timeseries");
   f.write(tg.get(), "t", series.t);
@@ -66,11 +92,8 @@ void read_results(const Hdf5File& f, std::vector<PointResult>& points, TimeSerie
   for (const auto& [name, field] : k_per_replica) {
     unstack(points, field, f.read_matrix(pg.get(), name, rows, cols), w);
   }
-  for (const auto& [name, field] : k_per_node) {
-    if (!f.exists(std::string("points/") + name)) continue;
-    const auto data = f.read_matrix(pg.get(), name, rows, cols);
-    if (!points.empty()) unstack(points, field, data, data.size() / points.size());
-  }
+  read_optional(f, pg.get(), points, k_per_node);
+  read_optional(f, pg.get(), points, k_per_point_vector);
   const H5Id tg = f.open_group("timeseries");
   series.t = f.read_double(tg.get(), "t");
   series.K = f.read_double(tg.get(), "K");

@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "dynamics/checkpoint.hpp"
+#include "dynamics/node_statistics.hpp"
 #include "dynamics/ordered_sum.hpp"
 #include "dynamics/time_average.hpp"
 #include "parallel/parallel_session.hpp"
@@ -29,6 +30,7 @@ struct Segment {
   BatchMeans R;
   std::vector<double> energy0, momentum0, momentum_scale, energy_err_max, momentum_drift_max;
   std::vector<double> theta_T1, R_node_sum;
+  NodeStatistics stats;
 };
 
 struct Observables {
@@ -63,8 +65,9 @@ class Run {
   void guard(double K, const Observables& o);
   void maybe_checkpoint(int k_index, bool force_now);
   void restore(const Checkpoint& c);
-  std::vector<double> gather(const std::vector<double>& local) const;
-  std::vector<double> scatter(const std::vector<double>& global) const;
+  std::vector<double> gather(const std::vector<double>& local, int width = 0) const;
+  std::vector<double> scatter(const std::vector<double>& global, int width = 0) const;
+  std::int64_t rotor_samples() const;
   void progress(int k_index, bool final_line) const;
 
   const DistributedNetwork& m_network;
@@ -139,7 +142,17 @@ void Run::start_segment(int k_index) {
   if (m_params.node_data) {
     m_seg.R_node_sum.assign(m_state.p.size(), 0.0);
     if (transient == 0) m_seg.theta_T1 = m_state.theta;
+    m_seg.stats = NodeStatistics(m_state.first_row, m_state.rows, m_params.rotor_node,
+                                 rotor_samples(), m_params.phase_bins, o.momentum[0] / m_n);
   }
+}
+
+std::int64_t Run::rotor_samples() const {
+  // Records fall on multiples of the stride and on the last step.
+  const std::int64_t steps = steps_for(m_params.duration, m_params.h);
+  const std::int64_t transient = steps_for(m_params.transient, m_params.h);
+  const std::int64_t stride = m_params.record_stride;
+  return steps / stride - transient / stride + (steps % stride != 0 ? 1 : 0);
 }
 
 void Run::sample() {
@@ -149,6 +162,11 @@ void Run::sample() {
   for (std::size_t k = 0; k < m_seg.R_node_sum.size(); ++k) {
     m_seg.R_node_sum[k] += std::sqrt(y[2 * k] * y[2 * k] + y[2 * k + 1] * y[2 * k + 1]) / m_n;
   }
+  const double t = static_cast<double>(m_seg.step) * m_params.h;
+  m_seg.stats.add(m_state, y, t, m_n);
+  // psi_n - psi_1 once per time unit (Fig. histPsinMinusPsi1).
+  const std::int64_t per_unit = std::max<std::int64_t>(1, std::llround(1.0 / m_params.h));
+  if (m_seg.step % per_unit == 0) m_seg.stats.add_phase_sample(y, m_width);
 }
 
 void Run::guard(double K, const Observables& o) {
@@ -183,6 +201,9 @@ void Run::guard(double K, const Observables& o) {
 void Run::record(int k_index) {
   const double K = m_params.K[static_cast<std::size_t>(k_index)];
   const Observables o = observe(K);
+  if (m_params.node_data && m_seg.step > steps_for(m_params.transient, m_params.h)) {
+    m_seg.stats.add_rotor_sample(m_state, static_cast<double>(m_seg.step) * m_params.h);
+  }
   for (std::size_t b = 0; b < o.energy.size(); ++b) {
     const double err = std::abs(o.energy[b] - m_seg.energy0[b]) / std::abs(m_seg.energy0[b]);
     m_seg.energy_err_max[b] = std::max(m_seg.energy_err_max[b], err);
@@ -198,9 +219,9 @@ void Run::record(int k_index) {
   guard(K, o);
 }
 
-std::vector<double> Run::gather(const std::vector<double>& local) const {
-  // Rows x width: one gather per column (checkpoints only).
-  const auto w = static_cast<std::size_t>(m_width);
+std::vector<double> Run::gather(const std::vector<double>& local, int width) const {
+  // Rows x width (default: replicas): one gather per column (checkpoints and results only).
+  const auto w = static_cast<std::size_t>(width > 0 ? width : m_width);
   const auto rows = static_cast<std::size_t>(m_state.rows);
   const auto n = static_cast<std::size_t>(m_network.global_size());
   std::vector<double> global(n * w), column(rows);
@@ -212,8 +233,8 @@ std::vector<double> Run::gather(const std::vector<double>& local) const {
   return global;
 }
 
-std::vector<double> Run::scatter(const std::vector<double>& global) const {
-  const auto w = static_cast<std::size_t>(m_width);
+std::vector<double> Run::scatter(const std::vector<double>& global, int width) const {
+  const auto w = static_cast<std::size_t>(width > 0 ? width : m_width);
   const auto first = static_cast<std::ptrdiff_t>(m_state.first_row) * static_cast<std::ptrdiff_t>(w);
   const auto count = static_cast<std::ptrdiff_t>(m_state.rows) * static_cast<std::ptrdiff_t>(w);
   if (global.size() < static_cast<std::size_t>(first + count)) {
@@ -249,6 +270,14 @@ void Run::maybe_checkpoint(int k_index, bool force_now) {
   c.momentum_drift_max = m_seg.momentum_drift_max;
   if (!m_seg.theta_T1.empty()) c.theta_T1 = gather(m_seg.theta_T1);
   if (!m_seg.R_node_sum.empty()) c.R_node_sum = gather(m_seg.R_node_sum);
+  if (m_params.node_data) {
+    c.node_rows = gather(m_seg.stats.row_state(), 6);
+    c.node_globals = m_seg.stats.global_state();
+    // Counts are per rank and additive; the counters [0], [1] are equal on every rank.
+    std::vector<double> additive(c.node_globals.begin() + 2, c.node_globals.end());
+    ParallelSession::sum_in_place(additive);
+    std::copy(additive.begin(), additive.end(), c.node_globals.begin() + 2);
+  }
   c.points = m_result.points;
   c.series = m_result.series;
   if (ParallelSession::rank() == 0) write_checkpoint(m_params.checkpoint_path, c);
@@ -283,6 +312,11 @@ void Run::restore(const Checkpoint& c) {
   m_seg.momentum_drift_max = c.momentum_drift_max;
   m_seg.theta_T1 = c.theta_T1.empty() ? std::vector<double>{} : scatter(c.theta_T1);
   if (!c.R_node_sum.empty()) m_seg.R_node_sum = scatter(c.R_node_sum);
+  if (m_params.node_data) {
+    m_seg.stats = NodeStatistics(m_state.first_row, m_state.rows, m_params.rotor_node,
+                                 rotor_samples(), m_params.phase_bins, c.momentum0[0] / m_n);
+    m_seg.stats.restore(scatter(c.node_rows, 6), c.node_globals, ParallelSession::rank() == 0);
+  }
   m_result.points = c.points;
   m_result.series = c.series;
   m_result.steps = c.steps_total;
@@ -307,6 +341,14 @@ void Run::finish_segment(int k_index) {
     }
     point.omega_node = gather(omega);
     point.R_node = gather(r_node);
+    NodeStatisticsResult stats = m_seg.stats.finish(m_network);
+    point.r_node = std::move(stats.r);
+    point.fluctuation = std::move(stats.fluctuation);
+    point.synchronised = std::move(stats.synchronised);
+    point.phase_histogram = std::move(stats.phase_histogram);
+    point.rotor_theta_bar = std::move(stats.rotor_theta_bar);
+    point.rotor_p_bar = std::move(stats.rotor_p_bar);
+    point.frame = {stats.omega, stats.phi};
   }
   m_result.points.push_back(std::move(point));
 }
@@ -400,6 +442,8 @@ void validate(const SimulationParameters& p) {
     if (!positive(r.sigma0)) throw ParameterError("sigma0", std::to_string(r.sigma0), "sigma0 > 0");
   }
   if (p.record_stride < 1) throw ParameterError("record stride", std::to_string(p.record_stride), ">= 1");
+  if (p.phase_bins < 1) throw ParameterError("phase bins", std::to_string(p.phase_bins), ">= 1");
+  if (p.rotor_node < 0) throw ParameterError("rotor node", std::to_string(p.rotor_node), ">= 0");
   if (p.batches < 2) throw ParameterError("batches", std::to_string(p.batches), ">= 2");
   if (!positive(p.energy_tolerance)) {
     throw ParameterError("energy tolerance", std::to_string(p.energy_tolerance), "> 0");
@@ -419,6 +463,8 @@ std::string fingerprint(const SimulationParameters& p, const DistributedNetwork&
   j["record_stride"] = p.record_stride;
   j["batches"] = p.batches;
   j["node_data"] = p.node_data;
+  j["rotor_node"] = p.rotor_node;
+  j["phase_bins"] = p.phase_bins;
   j["integrator"] = p.integrator;
   j["n"] = network.global_size();
   j["nnz"] = network.global_nnz();
@@ -428,6 +474,10 @@ std::string fingerprint(const SimulationParameters& p, const DistributedNetwork&
 SimulationResult simulate(const DistributedNetwork& network, const std::vector<double>& degrees,
                           CouplingForce& force, const SimulationParameters& params) {
   validate(params);
+  if (params.rotor_node >= network.global_size()) {
+    throw ParameterError("rotor node", std::to_string(params.rotor_node),
+                         "0 <= node < N = " + std::to_string(network.global_size()));
+  }
   Run run(network, degrees, force, params);
   return run.execute();
 }

@@ -33,7 +33,9 @@ struct SimulationParameters {
   int record_stride = 100;          ///< steps between time-series records
   int batches = 20;                 ///< batch means for the SEM of <R>_t
   double energy_tolerance = 1e-2;   ///< stop when |E - E0| / |E0| exceeds this
-  bool node_data = false;           ///< per-node <R_n>_t and Omega_n over [T1, T2]
+  bool node_data = false;           ///< per-node statistics over [T1, T2] (PointResult)
+  NodeIndex rotor_node = 0;         ///< node_data: the rotor whose (theta_bar, p_bar) is sampled
+  int phase_bins = 72;              ///< node_data: bins of the psi_n - psi_1 histogram
   std::string integrator = "leapfrog";
   std::string checkpoint_path;      ///< empty: no checkpoints
   double checkpoint_seconds = 5.0;  ///< wall time between checkpoints (also at each K's end)
@@ -54,6 +56,13 @@ struct PointResult {
   std::vector<double> momentum_drift;          ///< per replica: max |P(t) - P(0)| / sum |p_n(0)|
   std::vector<double> R_node;                  ///< N x replicas: <R_n>_t (node_data)
   std::vector<double> omega_node;              ///< N x replicas: Omega_n (node_data)
+  // node_data, replica 0 (see node_statistics.hpp):
+  std::vector<double> r_node;                  ///< r_n of eq:rnDef, N
+  std::vector<double> fluctuation;             ///< Re<z_n e^{-i theta_bar_n}>_t, N
+  std::vector<double> synchronised;            ///< <r_n cos theta_bar_n>_t, N
+  std::vector<double> phase_histogram;         ///< psi_n - psi_1 counts over [-pi, pi)
+  std::vector<double> rotor_theta_bar, rotor_p_bar;  ///< samples of the chosen rotor
+  std::vector<double> frame;                   ///< {Omega = P/N, phi}
 };
 
 struct TimeSeries {

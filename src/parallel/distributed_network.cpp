@@ -128,6 +128,10 @@ DistributedNetwork::LocalAdjacency DistributedNetwork::local_adjacency() const {
   return a;
 }
 
+bool DistributedNetwork::columns_are_owned_rows() const {
+  return m_impl->matrix->getColMap()->isSameAs(*m_impl->map);
+}
+
 void DistributedNetwork::import_columns(const double* owned, int width, double* columns) const {
   const auto col_map = m_impl->matrix->getColMap();
   if (m_impl->row_to_columns.is_null()) {

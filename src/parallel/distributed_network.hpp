@@ -51,6 +51,10 @@ class DistributedNetwork {
   /// `columns` is LocalAdjacency::columns x width row-major. Collective (one Tpetra Import).
   void import_columns(const double* owned, int width, double* columns) const;
 
+  /// True when the column space is the owned block itself, in the same order (one rank, every
+  /// node a column): then import_columns is the identity and callers may skip it.
+  bool columns_are_owned_rows() const;
+
   struct Impl;
   const Impl& impl() const { return *m_impl; }
 
