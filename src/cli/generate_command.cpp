@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/validators.hpp"
 #include "cli/provenance.hpp"
 #include "core/atomic_file.hpp"
 #include "io/network_file.hpp"
@@ -91,7 +92,7 @@ void add_generate_command(CLI::App& app) {
   e->add_option("--n", er.n, "Number of nodes")->required()->check(CLI::Range(1, 2147483647));
   auto* q = e->add_option("--q", er.q, "Link probability")->check(CLI::Range(0.0, 1.0));
   auto* d = e->add_option("--mean-degree", er.mean_degree, "Mean degree (N-1) q")
-                ->check(CLI::NonNegativeNumber);
+                ->check(k_non_negative);
   q->excludes(d);
   e->add_option("--seed", er.seed, "Random seed")->required();
   e->add_option("-o,--output", er.output, "Output file (.mtx, .h5 or edge list .txt)")->required();

@@ -41,6 +41,7 @@ int run(int argc, char** argv) {
   hmfnet::cli::add_generate_command(app);
   hmfnet::cli::add_rewire_command(app);
   hmfnet::cli::add_spectrum_command(app);
+  hmfnet::cli::add_theory_command(app);
   hmfnet::cli::add_simulate_command(app);
   hmfnet::cli::add_demo_command(app);
   try {

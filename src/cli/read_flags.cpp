@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/validators.hpp"
 #include "io/network_file.hpp"
 
 namespace hmfnet::cli {
@@ -14,7 +15,7 @@ void ReadFlags::add_to(CLI::App* command) {
   command->add_option("--index-base", index_base, "Edge lists: first node index (0 or 1)")
       ->check(CLI::IsMember({0, 1}));
   command->add_option("--nodes", nodes, "Edge lists: number of nodes (default: largest index+1)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(k_non_negative);
 }
 
 Network ReadFlags::read(const std::string& path) const {

@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/validators.hpp"
 #include "cli/provenance.hpp"
 #include "cli/read_flags.hpp"
 #include "core/atomic_file.hpp"
@@ -48,10 +49,10 @@ void add_rewire_command(CLI::App& app) {
   c->add_option("input", f.input, "Network file (.mtx, .h5, edge list)")->required();
   c->add_option("--target-rho", f.target_rho, "Target degree correlation rho (> 0)")
       ->required()
-      ->check(CLI::PositiveNumber);
+      ->check(k_positive);
   c->add_option("--seed", f.seed, "Random seed")->required();
   c->add_option("--max-attempts", f.max_attempts, "Swap attempts before giving up (0: 200 x edges)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(k_non_negative);
   c->add_option("-o,--output", f.output, "Output file")->required();
   f.read.add_to(c);
   c->callback([] { run(f); });

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "cli/commands.hpp"
+#include "cli/validators.hpp"
 #include "cli/provenance.hpp"
 #include "cli/read_flags.hpp"
 #include "core/atomic_file.hpp"
@@ -207,7 +208,7 @@ void add_simulate_command(CLI::App& app) {
                                "(the paper's protocol: each K continues from the current state)");
   c->add_option("input", f.input, "Network file (.mtx, .h5, edge list)")->required();
   c->add_option("--sigma0", f.sigma0, "Std of the initial Gaussian momenta (default 0.35)")
-      ->check(CLI::PositiveNumber);
+      ->check(k_positive);
   c->add_option("--omega", f.omega, "Mean of the initial momenta (default 6)");
   auto* k = c->add_option("--K", f.K, "Couplings, comma separated")->delimiter(',');
   auto* kr = c->add_option("--K-over-Kc", f.K_over_Kc,
@@ -216,10 +217,10 @@ void add_simulate_command(CLI::App& app) {
   auto* ks = c->add_option("--K-sweep", f.sweep, "START:STOP:STEP (the paper's sweep)");
   k->excludes(kr)->excludes(ks);
   kr->excludes(ks);
-  c->add_option("--h", f.h, "Time step (default 0.01)")->check(CLI::PositiveNumber);
-  c->add_option("--T", f.T, "Time per K, T2 (default 1000)")->check(CLI::PositiveNumber);
+  c->add_option("--h", f.h, "Time step (default 0.01)")->check(k_positive);
+  c->add_option("--T", f.T, "Time per K, T2 (default 1000)")->check(k_positive);
   c->add_option("--transient", f.transient, "Discarded start of each K, T1 (default 500)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(k_non_negative);
   c->add_option("--seed", f.seed, "Random seed of the initial state")->required();
   c->add_option("--replicas", f.replicas, "Independent replicas (seeds seed..seed+B-1)")
       ->check(CLI::Range(1, 64));
@@ -235,7 +236,7 @@ void add_simulate_command(CLI::App& app) {
               "Per node and K: <R_n>_t, Omega_n, r_n, the fluctuation terms, the psi_n - psi_1 "
               "histogram and one rotor's (theta_bar, p_bar) samples (docs/simulation_output.md)");
   c->add_option("--rotor-node", f.rotor_node, "--node-data: the rotor sampled (default 0)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(k_non_negative);
   c->add_option("--phase-bins", f.phase_bins, "--node-data: histogram bins (default 72)")
       ->check(CLI::Range(1, 100000));
   c->add_flag("--restart-each-K", f.restart_each_K, "Each K starts from the initial state");
@@ -243,7 +244,7 @@ void add_simulate_command(CLI::App& app) {
       ->check(CLI::Range(1, 1000000000));
   c->add_option("--energy-tolerance", f.energy_tolerance,
                 "Stop when the relative energy error exceeds this (default 1e-2)")
-      ->check(CLI::PositiveNumber);
+      ->check(k_positive);
   c->add_option("--integrator", f.integrator,
                 "leapfrog (default; the paper's), yoshida4, blanes_moan (4th-order symplectic), "
                 "rk4 (non-symplectic contrast)");

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/validators.hpp"
 #include "cli/read_flags.hpp"
 #include "parallel/distributed_network.hpp"
 #include "spectral/network_summary.hpp"
@@ -59,7 +60,7 @@ void add_spectrum_command(CLI::App& app) {
   c->add_option("input", f.input, "Network file (.mtx, .h5, edge list)")->required();
   c->add_flag("--json", f.json, "One JSON object on stdout");
   c->add_option("--sigma0", f.sigma0, "Momentum spread: also report K_c = 2 sigma0^2 N / lambda")
-      ->check(CLI::PositiveNumber);
+      ->check(k_positive);
   c->add_option("--tolerance", f.tolerance, "Relative eigen-residual tolerance")
       ->check(CLI::Range(1e-15, 1e-2));
   f.read.add_to(c);

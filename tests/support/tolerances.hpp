@@ -23,4 +23,23 @@ constexpr double k_sum_rel = 1e-9;
 /// rate of 6e-5 per check (normal approximation).
 constexpr double k_sigmas = 4.0;
 
+/// Special functions (v = I1/I0, erfcx) against independent evaluations in extended precision:
+/// both sides round a handful of operations (Boost's I0, I1, erfc are accurate to a few ulp), so
+/// 1e-14 = 45 eps holds with room, while a wrong branch or a truncated series misses by orders of
+/// magnitude.
+constexpr double k_special_function_rel = 1e-14;
+
+/// Scalar roots found by TOMS 748 to full precision, against another solution of the same
+/// equation: the double rounding of the function (~1e-16) over a slope of order 1, with room.
+constexpr double k_root_rel = 1e-12;
+
+/// Solutions of eq:rSigmaBesselMain / eq:KtoInfinity at solver tolerance 1e-12 against closed
+/// forms: the error is the residual over the distance of the iteration's Jacobian from 1, about
+/// 2 (K/K_c - 1) near onset; the tests keep K/K_c >= 1.01 (error <= 5e-11) unless they say so.
+constexpr double k_self_consistent_rel = 1e-9;
+
+/// Adaptive quadrature (Gauss-Kronrod, tanh-sinh) of smooth integrands at requested tolerance
+/// <= 1e-10.
+constexpr double k_quadrature_rel = 1e-9;
+
 }  // namespace hmfnet::test

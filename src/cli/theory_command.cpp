@@ -1,0 +1,177 @@
+// `hmfnet theory`: the paper's predictions for one network and momentum spread sigma0:
+// K_c (eq:criticalKFirstOrder), G (eq:globalOrderRInDeltaK), the growth rate gamma (eq:gammaKKc)
+// and the synchronized state R(K) (eq:rSigmaBesselMain) at each K, and the K -> infinity limit
+// R_hat (eq:KtoInfinity and its degree approximation eq:rd).
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "cli/validators.hpp"
+#include "cli/read_flags.hpp"
+#include "core/error.hpp"
+#include "network/degree_statistics.hpp"
+#include "parallel/distributed_network.hpp"
+#include "spectral/perron.hpp"
+#include "theory/critical_coupling.hpp"
+#include "theory/growth_rate.hpp"
+#include "theory/large_k_limit.hpp"
+#include "theory/onset_amplitude.hpp"
+#include "theory/self_consistent.hpp"
+
+namespace hmfnet::cli {
+
+namespace {
+
+struct TheoryFlags {
+  std::string input;
+  double sigma0 = 0.0;
+  std::vector<double> K;
+  std::vector<double> K_over_Kc;
+  bool json = false;
+  double tolerance = 1e-10;
+  ReadFlags read;
+};
+
+struct TheoryReport {
+  double lambda = 0.0;
+  double Kc = 0.0;
+  double G = 0.0;
+  double mean_degree = 0.0;
+  std::vector<SelfConsistentSolution> points;
+  LargeKLimit large_k;
+  double R_hat_degree = 0.0;
+};
+
+nlohmann::json to_json(const TheoryReport& t, const TheoryFlags& f, NodeIndex n) {
+  nlohmann::json j;
+  j["n"] = n;
+  j["mean_degree"] = t.mean_degree;
+  j["sigma0"] = f.sigma0;
+  j["lambda"] = t.lambda;
+  j["Kc"] = t.Kc;
+  j["G"] = t.G;
+  j["R_hat_iteration"] = t.large_k.R_hat;
+  j["R_hat_iterations"] = t.large_k.iterations;
+  j["R_hat_residual"] = t.large_k.residual;
+  j["R_hat_degree_approx"] = t.R_hat_degree;
+  j["gamma"] = nlohmann::json::array();
+  j["points"] = nlohmann::json::array();
+  for (const auto& p : t.points) {
+    const double kappa = p.K / t.Kc;
+    if (kappa > 1.0)
+      j["gamma"].push_back({{"K_over_Kc", kappa}, {"gamma", growth_rate(kappa, f.sigma0)}});
+    j["points"].push_back({{"K", p.K},
+                           {"K_over_Kc", kappa},
+                           {"R", p.R},
+                           {"R_onset", onset_order_parameter(t.G, kappa)},
+                           {"sigma2", p.sigma2},
+                           {"status", solve_status_name(p.status)},
+                           {"iterations", p.iterations},
+                           {"residual", p.residual}});
+  }
+  return j;
+}
+
+void print_text(const TheoryReport& t, const TheoryFlags& f) {
+  std::cout << std::setprecision(6) << "lambda             " << t.lambda << "\n"
+            << "K_c                " << t.Kc << " (sigma0 = " << f.sigma0 << ")\n"
+            << "G                  " << t.G << "\n"
+            << "R_hat (K -> inf)   " << t.large_k.R_hat << " (eq:KtoInfinity, "
+            << t.large_k.iterations << " iterations), " << t.R_hat_degree
+            << " (degree approximation eq:rd)\n\n"
+            << std::setw(12) << "K" << std::setw(10) << "K/K_c" << std::setw(12) << "R"
+            << std::setw(12) << "G*sqrt" << std::setw(12) << "sigma^2" << std::setw(12) << "gamma"
+            << std::setw(7) << "iter" << std::setw(12) << "residual"
+            << "  status\n";
+  for (const auto& p : t.points) {
+    const double kappa = p.K / t.Kc;
+    std::cout << std::setw(12) << p.K << std::setw(10) << kappa << std::setw(12) << p.R
+              << std::setw(12) << onset_order_parameter(t.G, kappa) << std::setw(12) << p.sigma2
+              << std::setw(12) << (kappa > 1.0 ? growth_rate(kappa, f.sigma0) : 0.0) << std::setw(7)
+              << p.iterations << std::setw(12) << p.residual << "  " << solve_status_name(p.status)
+              << "\n";
+  }
+}
+
+// One line naming every K that did not converge (the caller prints the results first).
+void require_converged(const TheoryReport& t) {
+  std::string failed;
+  for (const auto& p : t.points) {
+    if (p.status == SolveStatus::failed)
+      failed += " K = " + std::to_string(p.K) + ": " + p.message + ";";
+  }
+  if (t.large_k.status == SolveStatus::failed)
+    failed += " K -> infinity: " + t.large_k.message + ";";
+  if (!failed.empty()) {
+    failed.pop_back();
+    throw ConvergenceError("eq:rSigmaBesselMain:" + failed);
+  }
+}
+
+void run(const TheoryFlags& f) {
+  // Step 1: the network and its Perron pair (collective over MPI ranks).
+  const Network net = f.read.read(f.input);
+  const DistributedNetwork distributed(net);
+  const PerronResult perron = perron_eigenpair(distributed);
+  if (!is_root()) return;
+  // Step 2: K_c, G, the couplings asked for.
+  TheoryReport t;
+  t.lambda = perron.lambda;
+  t.mean_degree = mean_degree(net);
+  t.Kc = critical_coupling(f.sigma0, static_cast<double>(net.size()), perron.lambda);
+  t.G = onset_amplitude(perron.lambda, t.mean_degree, perron.u);
+  if (!perron.nonnegative) {
+    std::cerr << f.input << ": warning: the eigenvector of lambda changes sign (A reducible): "
+              << "G and the first guesses assume a positive Perron vector\n";
+  }
+  std::vector<double> Ks = f.K;
+  for (const double kappa : f.K_over_Kc) Ks.push_back(kappa * t.Kc);
+  // Step 3: the synchronized state along K (warm-started), and the K -> infinity limit.
+  const SelfConsistentSystem system(net, perron.lambda, f.sigma0, 0.0, perron.u);
+  SelfConsistentOptions options;
+  options.tolerance = f.tolerance;
+  t.points = system.sweep(Ks, options);
+  t.large_k = solve_large_k_limit(net, options);
+  t.R_hat_degree = degree_approximation_R_hat(net.degrees());
+  if (f.json) {
+    std::cout << to_json(t, f, net.size()).dump() << std::endl;
+  } else {
+    print_text(t, f);
+  }
+  require_converged(t);
+}
+
+}  // namespace
+
+void add_theory_command(CLI::App& app) {
+  static TheoryFlags f;
+  auto* c = app.add_subcommand(
+      "theory", "K_c, G, growth rate, synchronized state R(K) and its K -> infinity limit");
+  c->add_option("input", f.input, "Network file (.mtx, .h5, edge list)")->required();
+  c->add_option("--sigma0", f.sigma0, "Standard deviation of the initial momenta")
+      ->required()
+      ->check(k_positive);
+  auto* k = c->add_option("--K", f.K, "Couplings K (comma-separated list)")
+                ->delimiter(',')
+                ->check(k_positive);
+  auto* kappa = c->add_option("--K-over-Kc", f.K_over_Kc, "Couplings as K/K_c (comma-separated)")
+                    ->delimiter(',')
+                    ->check(k_positive);
+  k->excludes(kappa);
+  c->add_flag("--json", f.json, "One JSON object on stdout");
+  c->add_option("--tolerance", f.tolerance, "Relative residual of the self-consistent solves")
+      ->check(CLI::Range(1e-14, 1e-2));
+  f.read.add_to(c);
+  c->callback([] {
+    if (f.K.empty() && f.K_over_Kc.empty()) {
+      throw ParameterError("--K / --K-over-Kc", "neither given", "one of them, a list of values");
+    }
+    run(f);
+  });
+}
+
+}  // namespace hmfnet::cli

@@ -1,0 +1,189 @@
+#include "theory/self_consistent.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numeric>
+#include <string>
+
+#include "core/error.hpp"
+#include "network/degree_statistics.hpp"
+#include "theory/all_to_all.hpp"
+#include "theory/onset_amplitude.hpp"
+
+namespace hmfnet {
+
+namespace {
+
+// A converged point with R below this fraction of the first guess's R is the incoherent root
+// r = 0, which the relative residual can only pass when K/K_c - 1 is at the tolerance level.
+constexpr double k_trivial_fraction = 1e-3;
+
+std::string short_number(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", x);
+  return buffer;
+}
+
+std::vector<double> multiply(const Network& network, const std::vector<double>& x) {
+  std::vector<double> y(static_cast<std::size_t>(network.size()), 0.0);
+  for (NodeIndex i = 0; i < network.size(); ++i) {
+    double sum = 0.0;
+    for (EdgeOffset k = network.row_begin(i); k < network.row_end(i); ++k) {
+      sum += network.weight(k) * x[static_cast<std::size_t>(network.col(k))];
+    }
+    y[static_cast<std::size_t>(i)] = sum;
+  }
+  return y;
+}
+
+// The shape of the first guess: the Perron vector if it is usable (right size, one sign),
+// otherwise the degrees (u_n ~ d_n for uncorrelated networks), scaled to sum 1.
+std::vector<double> guess_shape(const Network& network, std::vector<double> perron) {
+  const auto n = static_cast<std::size_t>(network.size());
+  if (!perron.empty() && perron.size() != n) {
+    throw ParameterError("Perron vector", std::to_string(perron.size()) + " entries",
+                         std::to_string(n) + " entries (one per node)");
+  }
+  const double total = std::accumulate(perron.begin(), perron.end(), 0.0);
+  const bool one_sign = !perron.empty() && std::all_of(perron.begin(), perron.end(),
+                                                       [&](double x) { return x * total >= 0.0; });
+  std::vector<double> shape = one_sign ? std::move(perron) : network.degrees();
+  const double sum = std::accumulate(shape.begin(), shape.end(), 0.0);
+  for (auto& x : shape) x = std::abs(x / sum);
+  return shape;
+}
+
+}  // namespace
+
+double initial_coherence(const Network& network, const std::vector<double>& theta) {
+  const auto n = static_cast<std::size_t>(network.size());
+  if (theta.size() != n) {
+    throw ParameterError("initial phases", std::to_string(theta.size()) + " entries",
+                         std::to_string(n) + " entries (one per node)");
+  }
+  std::vector<double> c(n), s(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    c[i] = std::cos(theta[i]);
+    s[i] = std::sin(theta[i]);
+  }
+  const std::vector<double> ac = multiply(network, c), as = multiply(network, s);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < n; ++i) sum += c[i] * ac[i] + s[i] * as[i];
+  return sum / (static_cast<double>(n) * static_cast<double>(n));
+}
+
+SelfConsistentSystem::SelfConsistentSystem(const Network& network, double lambda, double sigma0,
+                                           double coherence, std::vector<double> perron)
+    : m_network(network), m_lambda(lambda), m_sigma0(sigma0), m_coherence(coherence) {
+  if (!(sigma0 > 0.0) || !std::isfinite(sigma0)) {
+    throw ParameterError("sigma0", std::to_string(sigma0), "0 < sigma0 < inf");
+  }
+  if (!(lambda > 0.0) || !std::isfinite(lambda)) {
+    throw ParameterError("lambda", std::to_string(lambda), "lambda > 0 (a network with edges)");
+  }
+  if (!std::isfinite(coherence)) {
+    throw ParameterError("initial coherence", std::to_string(coherence), "a finite number");
+  }
+  m_mean_degree = hmfnet::mean_degree(network);
+  if (!(m_mean_degree > 0.0)) {
+    throw ParameterError("network", "no edges", "a network with edges");
+  }
+  m_shape = guess_shape(network, std::move(perron));
+  m_onset_G = onset_amplitude(lambda, m_mean_degree, m_shape);
+}
+
+double SelfConsistentSystem::threshold() const {
+  const double n = static_cast<double>(m_network.size());
+  const double denominator = m_lambda + 2.0 * n * m_coherence;
+  if (!(denominator > 0.0)) return std::numeric_limits<double>::infinity();
+  return 2.0 * n * m_sigma0 * m_sigma0 / denominator;
+}
+
+std::vector<double> SelfConsistentSystem::first_guess(double kappa, double& mu) const {
+  const double R = std::min(m_onset_G * std::sqrt(kappa - 1.0), all_to_all_order_parameter(kappa));
+  std::vector<double> r(m_shape.size());
+  for (std::size_t i = 0; i < r.size(); ++i) r[i] = R * m_mean_degree * m_shape[i];
+  // The all-to-all variance mu0 (1 + 2 kappa R^2) (all_to_all.hpp), with mu0 kept positive.
+  const double s2 = m_sigma0 * m_sigma0;
+  mu = std::max(mu, 1e-3 * s2) + 2.0 * kappa * R * R * s2;
+  return r;
+}
+
+SelfConsistentSolution SelfConsistentSystem::solve(double K, const SelfConsistentOptions& options,
+                                                   const SelfConsistentSolution* warm_start) const {
+  if (!(K > 0.0) || !std::isfinite(K)) {
+    throw ParameterError("K", std::to_string(K), "0 < K < inf");
+  }
+  const auto start = std::chrono::steady_clock::now();
+  SelfConsistentSolution out;
+  out.K = K;
+  out.K_over_Kc = K / threshold();
+  const double mu0 = m_sigma0 * m_sigma0 - K * m_coherence;
+  const auto n = static_cast<std::size_t>(m_network.size());
+  if (out.K_over_Kc <= 1.0) {
+    out.status = SolveStatus::incoherent;
+    out.r.assign(n, 0.0);
+    out.sigma2 = mu0;
+    return out;
+  }
+  double mu = mu0;
+  std::vector<double> r = first_guess(out.K_over_Kc, mu);
+  const double R_guess = global_order_parameter(r, m_mean_degree);
+  if (warm_start != nullptr && warm_start->status == SolveStatus::converged &&
+      warm_start->r.size() == n) {
+    // The previous solution's shape, with R and mu - mu0 moved along the first-guess curve
+    // (R scaled like the guess, mu - mu0 like K/K_c R^2). On ER and SF networks with N = 10^4
+    // this saved 4-17% of the iterations of K sweeps against cold starts; the unscaled previous
+    // solution did between 20% better and 28% worse.
+    const double mu0_previous = m_sigma0 * m_sigma0 - warm_start->K * m_coherence;
+    double mu_unused = mu0_previous;
+    const double R_previous =
+        global_order_parameter(first_guess(warm_start->K_over_Kc, mu_unused), m_mean_degree);
+    r = warm_start->r;
+    for (auto& x : r) x *= R_guess / R_previous;
+    const double mu_warm = mu0 + (warm_start->sigma2 - mu0_previous) *
+                                     (out.K_over_Kc * R_guess * R_guess) /
+                                     (warm_start->K_over_Kc * R_previous * R_previous);
+    if (mu_warm > 0.0) mu = mu_warm;  // else (mu0 < 0 far from the previous K) the cold guess
+  }
+  const SelfConsistentMap map(m_network, mu0 / K);
+  const MapFixedPoint fp = iterate_self_consistent_map(map, std::move(r), mu / K, options);
+  out.r = fp.r;
+  out.sigma2 = fp.eta * K;
+  out.R = global_order_parameter(fp.r, m_mean_degree);
+  out.iterations = fp.iterations;
+  out.residual = fp.residual;
+  out.restarts = fp.restarts;
+  if (!fp.converged) {
+    out.message = "residual " + short_number(fp.residual) + " after " +
+                  std::to_string(fp.iterations) + " iterations (tolerance " +
+                  short_number(options.tolerance) + ")";
+  } else if (out.R < k_trivial_fraction * R_guess) {
+    out.message = "reached the incoherent root r = 0 (R = " + short_number(out.R) +
+                  ") although K/K_c = " + short_number(out.K_over_Kc) + " > 1";
+  } else {
+    out.status = SolveStatus::converged;
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+std::vector<SelfConsistentSolution> SelfConsistentSystem::sweep(
+    const std::vector<double>& Ks, const SelfConsistentOptions& options) const {
+  std::vector<std::size_t> order(Ks.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return Ks[a] < Ks[b]; });
+  std::vector<SelfConsistentSolution> out(Ks.size());
+  const SelfConsistentSolution* previous = nullptr;
+  for (const std::size_t k : order) {
+    out[k] = solve(Ks[k], options, previous);
+    if (out[k].status == SolveStatus::converged) previous = &out[k];
+  }
+  return out;
+}
+
+}  // namespace hmfnet
