@@ -34,24 +34,15 @@
 #include "parallel/parallel_session.hpp"
 #include "spectral/perron.hpp"
 #include "support/claim_check.hpp"
+#include "support/sample_statistics.hpp"
 #include "theory/onset_amplitude.hpp"
 
 using namespace hmfnet;
 
 namespace {
 
-struct MeanSd {
-  double mean = 0.0;
-  double sd = 0.0;
-};
-
-MeanSd mean_sd(const std::vector<double>& x) {
-  double m = 0.0, v = 0.0;
-  for (const double a : x) m += a;
-  m /= static_cast<double>(x.size());
-  for (const double a : x) v += (a - m) * (a - m);
-  return {m, x.size() > 1 ? std::sqrt(v / static_cast<double>(x.size() - 1)) : 0.0};
-}
+using verification::MeanSd;
+using verification::mean_sd;
 
 double onset_amplitude_of(const Network& net) {
   const DistributedNetwork distributed(net);
