@@ -11,6 +11,7 @@
 #include <cmath>
 #include <vector>
 
+#include "cached_network.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/network_force.hpp"
 #include "network/erdos_renyi.hpp"
@@ -20,18 +21,9 @@ using namespace hmfnet;
 
 namespace {
 
-const Network& er(NodeIndex n, double degree) {
-  static Network net;
-  static NodeIndex cached = 0;
-  if (cached != n) {
-    net = erdos_renyi({n, erdos_renyi_probability(n, degree), 7});
-    cached = n;
-  }
-  return net;
-}
-
 void LeapFrogStep(benchmark::State& state) {
-  const Network& net = er(static_cast<NodeIndex>(state.range(0)), static_cast<double>(state.range(1)));
+  const Network& net = bench::cached_erdos_renyi(static_cast<NodeIndex>(state.range(0)),
+                                                 static_cast<double>(state.range(1)));
   const auto replicas = static_cast<int>(state.range(2));
   omp_set_num_threads(static_cast<int>(state.range(3)));
   const DistributedNetwork d(net);
@@ -49,7 +41,8 @@ void LeapFrogStep(benchmark::State& state) {
 }
 
 void PlainCsrStep(benchmark::State& state) {
-  const Network& net = er(static_cast<NodeIndex>(state.range(0)), static_cast<double>(state.range(1)));
+  const Network& net = bench::cached_erdos_renyi(static_cast<NodeIndex>(state.range(0)),
+                                                 static_cast<double>(state.range(1)));
   const auto n = static_cast<std::size_t>(net.size());
   std::vector<double> theta(n), p(n, 6.0), c(n), s(n), g(n);
   for (std::size_t i = 0; i < n; ++i) theta[i] = 0.001 * static_cast<double>(i);
@@ -61,8 +54,10 @@ void PlainCsrStep(benchmark::State& state) {
     }
     for (NodeIndex i = 0; i < net.size(); ++i) {
       double yc = 0.0, ys = 0.0;
-      for (EdgeOffset k = net.row_begin(i); k < net.row_end(i); ++k) yc += c[std::size_t(net.col(k))];
-      for (EdgeOffset k = net.row_begin(i); k < net.row_end(i); ++k) ys += s[std::size_t(net.col(k))];
+      for (EdgeOffset k = net.row_begin(i); k < net.row_end(i); ++k)
+        yc += c[std::size_t(net.col(k))];
+      for (EdgeOffset k = net.row_begin(i); k < net.row_end(i); ++k)
+        ys += s[std::size_t(net.col(k))];
       g[std::size_t(i)] = inv_n * (c[std::size_t(i)] * ys - s[std::size_t(i)] * yc);
     }
     for (std::size_t i = 0; i < n; ++i) {
@@ -76,7 +71,8 @@ void PlainCsrStep(benchmark::State& state) {
 }
 
 void IndexStreamFloor(benchmark::State& state) {
-  const Network& net = er(static_cast<NodeIndex>(state.range(0)), static_cast<double>(state.range(1)));
+  const Network& net = bench::cached_erdos_renyi(static_cast<NodeIndex>(state.range(0)),
+                                                 static_cast<double>(state.range(1)));
   for (auto _ : state) {
     long long sum = 0;
     for (const NodeIndex j : net.cols()) sum += j;

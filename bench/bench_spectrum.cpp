@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "cached_network.hpp"
 #include "network/chung_lu.hpp"
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
@@ -15,19 +16,9 @@ using namespace hmfnet;
 
 namespace {
 
-const Network& er_network(NodeIndex n, double degree) {
-  static Network net;
-  static NodeIndex cached_n = 0;
-  if (cached_n != n) {
-    net = erdos_renyi({n, erdos_renyi_probability(n, degree), 7});
-    cached_n = n;
-  }
-  return net;
-}
-
 void PerronSolve(benchmark::State& state) {
-  const Network& net = er_network(static_cast<NodeIndex>(state.range(0)),
-                                  static_cast<double>(state.range(1)));
+  const Network& net = bench::cached_erdos_renyi(static_cast<NodeIndex>(state.range(0)),
+                                                 static_cast<double>(state.range(1)));
   const DistributedNetwork distributed(net);
   int iterations = 0;
   for (auto _ : state) {
@@ -39,8 +30,8 @@ void PerronSolve(benchmark::State& state) {
 }
 
 void SparseProduct(benchmark::State& state) {
-  const Network& net = er_network(static_cast<NodeIndex>(state.range(0)),
-                                  static_cast<double>(state.range(1)));
+  const Network& net = bench::cached_erdos_renyi(static_cast<NodeIndex>(state.range(0)),
+                                                 static_cast<double>(state.range(1)));
   const DistributedNetwork distributed(net);
   std::vector<double> x(static_cast<std::size_t>(distributed.local_size()), 1.0), y;
   for (auto _ : state) {
