@@ -13,6 +13,8 @@ packages=(
   libtrilinos-epetra-dev libtrilinos-rtop-dev libtrilinos-kokkos-kernels-dev libtrilinos-teuchos-dev
   libtrilinos-kokkos-dev
   libcli11-dev nlohmann-json3-dev libbenchmark-dev
+  python3 python3-numpy python3-h5py python3-matplotlib
+  clang libclang-rt-dev libomp-dev  # ci/fuzz.sh: libFuzzer and sanitizer runtimes, OpenMP for clang
 )
 
 missing=()

@@ -28,8 +28,9 @@ using namespace hmfnet;
 
 int main(int argc, char** argv) {
   ParallelSession session(&argc, &argv);
-  const bool full = verification::full_scale(argc, argv);
-  verification::ClaimCheck check("energy and momentum conservation (leap-frog, h = 0.01)");
+  verification::ClaimCheck check(
+      "conservation", "energy and momentum conservation (leap-frog, h = 0.01)", argc, argv);
+  const bool full = check.full();
   int status = 0;
   {
     // Step 1: the paper's ER network and K = 3 K_c.
@@ -55,10 +56,12 @@ int main(int argc, char** argv) {
       const double err = std::abs(r.series.energy[k] - e0) / std::abs(e0);
       (k < half ? first : second) = std::max(k < half ? first : second, err);
     }
-    std::printf("  INFO  K = %.4g (3 K_c), %lld steps: max |dH|/H first half %.3e, second half %.3e\n",
-                3.0 * Kc, static_cast<long long>(r.steps), first, second);
-    check.holds("energy error bounded (no drift)", second <= 2.0 * first,
-                "second-half max / first-half max = " + verification::ClaimCheck::format(second / first));
+    std::printf(
+        "  INFO  K = %.4g (3 K_c), %lld steps: max |dH|/H first half %.3e, second half %.3e\n",
+        3.0 * Kc, static_cast<long long>(r.steps), first, second);
+    check.holds(
+        "energy error bounded (no drift)", second <= 2.0 * first,
+        "second-half max / first-half max = " + verification::ClaimCheck::format(second / first));
     check.holds("energy error small", std::max(first, second) < 1e-6,
                 verification::ClaimCheck::format(std::max(first, second)) + " < 1e-6");
     double drift = 0.0;

@@ -23,8 +23,10 @@ using namespace hmfnet;
 
 int main(int argc, char** argv) {
   ParallelSession session(&argc, &argv);
-  const int seeds = verification::full_scale(argc, argv) ? 10 : 3;
-  verification::ClaimCheck check("G = 0.633 for ER N = 10^4, q = 0.01 (eq:globalOrderRInDeltaK)");
+  verification::ClaimCheck check("er_onset_amplitude",
+                                 "G = 0.633 for ER N = 10^4, q = 0.01 (eq:globalOrderRInDeltaK)",
+                                 argc, argv);
+  const int seeds = check.full() ? 10 : 3;
   double sum = 0.0, sum2 = 0.0;
   for (int s = 1; s <= seeds; ++s) {
     // Step 1: the paper's ER network; Step 2: lambda and u; Step 3: G from the moments of u.

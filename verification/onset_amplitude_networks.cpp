@@ -41,8 +41,8 @@ using namespace hmfnet;
 
 namespace {
 
-using verification::MeanSd;
 using verification::mean_sd;
+using verification::MeanSd;
 
 double onset_amplitude_of(const Network& net) {
   const DistributedNetwork distributed(net);
@@ -77,10 +77,12 @@ std::string format(const MeanSd& m) {
 
 int main(int argc, char** argv) {
   ParallelSession session(&argc, &argv);
-  const bool full = verification::full_scale(argc, argv);
   verification::ClaimCheck check(
+      "onset_amplitude_networks",
       "G = 0.633 (ER) > G = 0.354 (SF) for the networks of Fig. R_vs_K_theoretical "
-      "(eq:globalOrderRInDeltaK)");
+      "(eq:globalOrderRInDeltaK)",
+      argc, argv);
+  const bool full = check.full();
 
   // Step 1: ER, q = 0.01.
   std::vector<double> er;

@@ -71,10 +71,12 @@ double check_network(verification::ClaimCheck& check, const std::string& name, c
 
 int main(int argc, char** argv) {
   ParallelSession session(&argc, &argv);
-  const int seeds = verification::full_scale(argc, argv) ? 3 : 1;
   verification::ClaimCheck check(
+      "theory_near_onset",
       "eq:rSigmaBesselMain near onset follows R = G sqrt(dK/K_c) (eq:globalOrderRInDeltaK), "
-      "better for SF than ER at larger dK");
+      "better for SF than ER at larger dK",
+      argc, argv);
+  const int seeds = check.full() ? 3 : 1;
   for (int s = 1; s <= seeds; ++s) {
     // Step 1: the networks of Fig. R_vs_K_theoretical (sigma0^2 = 0.12 and 1 as in its caption;
     // R(K/K_c) does not depend on sigma0).

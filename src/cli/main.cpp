@@ -4,6 +4,7 @@
 
 #include "cli/commands.hpp"
 #include "core/error.hpp"
+#include "dynamics/interrupt.hpp"
 #include "hmfnet/version.hpp"
 #include "parallel/parallel_session.hpp"
 
@@ -49,6 +50,9 @@ int run(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;  // 0: --help or --version
+  } catch (const hmfnet::RunInterrupted& e) {
+    std::cerr << "hmfnet: interrupted: " << e.what() << '\n';
+    return 128 + e.signal();  // the shell's convention for a process ended by a signal
   } catch (const hmfnet::ConvergenceError& e) {
     std::cerr << "hmfnet: not converged: " << e.what() << '\n';
     return 3;

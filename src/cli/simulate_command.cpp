@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <cmath>
 #include <iostream>
@@ -17,6 +18,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "dynamics/integrator.hpp"
+#include "dynamics/interrupt.hpp"
 #include "dynamics/network_force.hpp"
 #include "dynamics/rank_one_force.hpp"
 #include "dynamics/run_file.hpp"
@@ -147,7 +149,18 @@ void run(const SimulateFlags& f) {
   const double Kc = critical_coupling(f.sigma0, net.size(), perron.lambda);
   const SimulationParameters params = parameters(f, Kc);
   auto force = choose_force(f, net, distributed);
+  install_interrupt_handlers();
   const SimulationResult result = simulate(distributed, net.degrees(), *force, params);
+  if (result.interrupted) {
+    const int signal = interrupt_signal();
+    throw RunInterrupted(signal, std::string(signal == SIGINT ? "SIGINT" : "SIGTERM") +
+                                     " after " + std::to_string(result.steps) + " steps; " +
+                                     (f.checkpoint.empty()
+                                          ? "no results written (add --checkpoint F to make runs "
+                                            "resumable)"
+                                          : "checkpoint " + f.checkpoint +
+                                                " written: rerun with --resume to continue"));
+  }
 
   nlohmann::json out;
   out["n"] = net.size();

@@ -23,7 +23,7 @@ NodeStatistics::NodeStatistics(NodeIndex first_row, NodeIndex rows, NodeIndex ro
       m_rows(rows),
       m_rotor(rotor),
       m_omega(omega),
-      m_rows_sums(6 * static_cast<std::size_t>(rows), 0.0),
+      m_rows_sums(k_row_width * static_cast<std::size_t>(rows), 0.0),
       m_histogram(static_cast<std::size_t>(bins), 0.0),
       m_rotor_theta(static_cast<std::size_t>(rotor_samples), 0.0),
       m_rotor_p(static_cast<std::size_t>(rotor_samples), 0.0) {}
@@ -31,18 +31,35 @@ NodeStatistics::NodeStatistics(NodeIndex first_row, NodeIndex rows, NodeIndex ro
 void NodeStatistics::add(const RotorState& state, const std::vector<double>& y, double t,
                          double n) {
   const auto w = static_cast<std::size_t>(state.replicas);
-  const std::complex<double> rotation = std::polar(1.0, -m_omega * t);
-  for (std::size_t r = 0; r < static_cast<std::size_t>(m_rows); ++r) {
+  const auto rows = static_cast<std::size_t>(m_rows);
+  // The measured frame (see the header): Psi = arg of the global field of replica 0.
+  std::vector<double> global{0.0, 0.0};
+  for (std::size_t r = 0; r < rows; ++r) {
+    global[0] += y[2 * r * w];
+    global[1] += y[2 * r * w + 1];
+  }
+  ParallelSession::sum_in_place(global);
+  const double frame = std::atan2(global[1], global[0]);
+  const bool first = m_count == 0;
+  if (first) m_t_first = t;
+  if (!first) m_frame_turned += wrap(frame - m_frame_last);
+  m_frame_last = frame;
+  m_t_last = t;
+  const std::complex<double> rotation = std::polar(1.0, -frame);
+  for (std::size_t r = 0; r < rows; ++r) {
     const std::complex<double> field(y[2 * r * w] / n, y[2 * r * w + 1] / n);
     const std::complex<double> back = std::polar(1.0, -state.theta[r * w]);
     const std::complex<double> a = field * back, b = back / rotation, c = field * rotation;
-    double* s = &m_rows_sums[6 * r];
+    double* s = &m_rows_sums[k_row_width * r];
     s[0] += a.real();
     s[1] += a.imag();
     s[2] += b.real();
     s[3] += b.imag();
     s[4] += c.real();
     s[5] += c.imag();
+    const double psi = std::arg(field);
+    if (!first) s[6] += wrap(psi - s[7]);
+    s[7] = psi;
   }
   ++m_count;
 }
@@ -62,18 +79,24 @@ void NodeStatistics::add_phase_sample(const std::vector<double>& y, int replicas
   }
 }
 
-void NodeStatistics::add_rotor_sample(const RotorState& state, double t) {
+void NodeStatistics::add_rotor_sample(const RotorState& state, double) {
   const auto index = static_cast<std::size_t>(m_rotor_count++);
   if (index >= m_rotor_theta.size()) return;
   if (m_rotor < m_first_row || m_rotor >= m_first_row + m_rows) return;
-  const auto r = static_cast<std::size_t>(m_rotor - m_first_row) *
-                 static_cast<std::size_t>(state.replicas);
-  m_rotor_theta[index] = state.theta[r] - m_omega * t;
+  const auto r =
+      static_cast<std::size_t>(m_rotor - m_first_row) * static_cast<std::size_t>(state.replicas);
+  m_rotor_theta[index] = wrap(state.theta[r] - m_frame_last);
   m_rotor_p[index] = state.p[r] - m_omega;
 }
 
 std::vector<double> NodeStatistics::global_state() const {
-  std::vector<double> g{static_cast<double>(m_count), static_cast<double>(m_rotor_count)};
+  std::vector<double> g{static_cast<double>(m_count),
+                        static_cast<double>(m_rotor_count),
+                        m_frame_turned,
+                        m_frame_last,
+                        m_t_first,
+                        m_t_last};
+  static_assert(k_shared_globals == 6);
   g.insert(g.end(), m_histogram.begin(), m_histogram.end());
   g.insert(g.end(), m_rotor_theta.begin(), m_rotor_theta.end());
   g.insert(g.end(), m_rotor_p.begin(), m_rotor_p.end());
@@ -85,23 +108,34 @@ void NodeStatistics::restore(std::vector<double> row_state, const std::vector<do
   m_rows_sums = std::move(row_state);
   m_count = static_cast<std::int64_t>(global[0]);
   m_rotor_count = static_cast<std::int64_t>(global[1]);
+  m_frame_turned = global[2];
+  m_frame_last = global[3];
+  m_t_first = global[4];
+  m_t_last = global[5];
   // Rank-additive parts: the summed values go to one rank, zeros elsewhere.
-  const std::size_t h = m_histogram.size(), s = m_rotor_theta.size();
-  for (std::size_t k = 0; k < h; ++k) m_histogram[k] = owner_of_globals ? global[2 + k] : 0.0;
+  const std::size_t g0 = k_shared_globals, h = m_histogram.size(), s = m_rotor_theta.size();
+  for (std::size_t k = 0; k < h; ++k) m_histogram[k] = owner_of_globals ? global[g0 + k] : 0.0;
   for (std::size_t k = 0; k < s; ++k) {
-    m_rotor_theta[k] = owner_of_globals ? global[2 + h + k] : 0.0;
-    m_rotor_p[k] = owner_of_globals ? global[2 + h + s + k] : 0.0;
+    m_rotor_theta[k] = owner_of_globals ? global[g0 + h + k] : 0.0;
+    m_rotor_p[k] = owner_of_globals ? global[g0 + h + s + k] : 0.0;
   }
 }
 
 NodeStatisticsResult NodeStatistics::finish(const DistributedNetwork& network) const {
   NodeStatisticsResult out;
-  out.omega = m_omega;
+  const double span = m_t_last > m_t_first ? m_t_last - m_t_first : 1.0;
+  out.omega = m_frame_turned / span;
+  out.omega_momentum = m_omega;
   const auto count = static_cast<double>(std::max<std::int64_t>(m_count, 1));
-  std::vector<std::vector<double>> columns(6);
-  for (std::size_t r = 0; r < static_cast<std::size_t>(m_rows); ++r)
-    for (std::size_t k = 0; k < 6; ++k) columns[k].push_back(m_rows_sums[6 * r + k] / count);
+  std::vector<std::vector<double>> columns(7);
+  for (std::size_t r = 0; r < static_cast<std::size_t>(m_rows); ++r) {
+    for (std::size_t k = 0; k < 6; ++k) {
+      columns[k].push_back(m_rows_sums[k_row_width * r + k] / count);
+    }
+    columns[6].push_back(m_rows_sums[k_row_width * r + 6] / span);
+  }
   for (auto& c : columns) c = network.gather(c);
+  out.psi_frequency = columns[6];
   const std::size_t n = columns[0].size();
   std::complex<double> total;
   for (std::size_t i = 0; i < n; ++i) total += std::complex<double>(columns[4][i], columns[5][i]);

@@ -39,6 +39,7 @@ const std::pair<const char*, std::vector<double> PointResult::*> k_per_point_vec
     {"phase_histogram", &PointResult::phase_histogram},
     {"rotor_theta_bar", &PointResult::rotor_theta_bar},
     {"rotor_p_bar", &PointResult::rotor_p_bar},
+    {"psi_frequency", &PointResult::psi_frequency},
     {"frame", &PointResult::frame}};
 
 // Per-point arrays present only with node data: [points * rows x cols], split evenly by point.

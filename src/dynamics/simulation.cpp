@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "dynamics/checkpoint.hpp"
+#include "dynamics/interrupt.hpp"
 #include "dynamics/node_statistics.hpp"
 #include "dynamics/ordered_sum.hpp"
 #include "dynamics/time_average.hpp"
@@ -64,6 +65,7 @@ class Run {
   void sample();
   void guard(double K, const Observables& o);
   void maybe_checkpoint(int k_index, bool force_now);
+  void finish_interrupted();
   void restore(const Checkpoint& c);
   std::vector<double> gather(const std::vector<double>& local, int width = 0) const;
   std::vector<double> scatter(const std::vector<double>& global, int width = 0) const;
@@ -110,7 +112,8 @@ Observables Run::observe(double K) const {
   std::vector<double> coupling = m_f.sums().coupling;
   // One reduction for all four sums.
   std::vector<double> all;
-  for (const auto* v : {&kinetic, &momentum, &scale, &coupling}) all.insert(all.end(), v->begin(), v->end());
+  for (const auto* v : {&kinetic, &momentum, &scale, &coupling})
+    all.insert(all.end(), v->begin(), v->end());
   ParallelSession::sum_in_place(all);
   const auto w = static_cast<std::size_t>(m_width);
   o.R = order_parameter();
@@ -188,11 +191,11 @@ void Run::guard(double K, const Observables& o) {
                   "this K: leap-frog needs h * omega_max < 2 with omega_max = sqrt(K max_n R_n) "
                   "= %.4g, i.e. h < %.4g",
                   K, static_cast<double>(m_seg.step) * m_params.h, b,
-                  std::isfinite(err) ? ("relative energy error " + std::to_string(err) +
-                                        " exceeds the tolerance " +
-                                        std::to_string(m_params.energy_tolerance))
-                                           .c_str()
-                                     : "energy is NaN or infinite",
+                  std::isfinite(err)
+                      ? ("relative energy error " + std::to_string(err) +
+                         " exceeds the tolerance " + std::to_string(m_params.energy_tolerance))
+                            .c_str()
+                      : "energy is NaN or infinite",
                   m_params.h, omega, omega > 0 ? 2.0 / omega : INFINITY);
     throw SimulationBlowUp(message);
   }
@@ -235,10 +238,12 @@ std::vector<double> Run::gather(const std::vector<double>& local, int width) con
 
 std::vector<double> Run::scatter(const std::vector<double>& global, int width) const {
   const auto w = static_cast<std::size_t>(width > 0 ? width : m_width);
-  const auto first = static_cast<std::ptrdiff_t>(m_state.first_row) * static_cast<std::ptrdiff_t>(w);
+  const auto first =
+      static_cast<std::ptrdiff_t>(m_state.first_row) * static_cast<std::ptrdiff_t>(w);
   const auto count = static_cast<std::ptrdiff_t>(m_state.rows) * static_cast<std::ptrdiff_t>(w);
   if (global.size() < static_cast<std::size_t>(first + count)) {
-    throw InputError(m_params.checkpoint_path, 0, "checkpoint arrays are too short for this network");
+    throw InputError(m_params.checkpoint_path, 0,
+                     "checkpoint arrays are too short for this network");
   }
   return std::vector<double>(global.begin() + first, global.begin() + first + count);
 }
@@ -247,8 +252,10 @@ void Run::maybe_checkpoint(int k_index, bool force_now) {
   if (m_params.checkpoint_path.empty()) return;
   const double since = std::chrono::duration<double>(Clock::now() - m_last_checkpoint).count();
   // Wall clocks differ between ranks: the root decides for everyone.
-  const bool due = force_now || ParallelSession::max(
-                                    ParallelSession::rank() == 0 && since >= m_params.checkpoint_seconds ? 1.0 : 0.0) > 0.0;
+  const bool due =
+      force_now ||
+      ParallelSession::max(
+          ParallelSession::rank() == 0 && since >= m_params.checkpoint_seconds ? 1.0 : 0.0) > 0.0;
   if (!due) return;
   Checkpoint c;
   c.fingerprint = fingerprint(m_params, m_network);
@@ -271,12 +278,13 @@ void Run::maybe_checkpoint(int k_index, bool force_now) {
   if (!m_seg.theta_T1.empty()) c.theta_T1 = gather(m_seg.theta_T1);
   if (!m_seg.R_node_sum.empty()) c.R_node_sum = gather(m_seg.R_node_sum);
   if (m_params.node_data) {
-    c.node_rows = gather(m_seg.stats.row_state(), 6);
+    c.node_rows = gather(m_seg.stats.row_state(), NodeStatistics::k_row_width);
     c.node_globals = m_seg.stats.global_state();
-    // Counts are per rank and additive; the counters [0], [1] are equal on every rank.
-    std::vector<double> additive(c.node_globals.begin() + 2, c.node_globals.end());
+    // Counts are per rank and additive; the leading shared values are equal on every rank.
+    const auto shared = static_cast<std::ptrdiff_t>(NodeStatistics::k_shared_globals);
+    std::vector<double> additive(c.node_globals.begin() + shared, c.node_globals.end());
     ParallelSession::sum_in_place(additive);
-    std::copy(additive.begin(), additive.end(), c.node_globals.begin() + 2);
+    std::copy(additive.begin(), additive.end(), c.node_globals.begin() + shared);
   }
   c.points = m_result.points;
   c.series = m_result.series;
@@ -285,14 +293,20 @@ void Run::maybe_checkpoint(int k_index, bool force_now) {
   m_last_checkpoint = Clock::now();
 }
 
+void Run::finish_interrupted() {
+  m_result.interrupted = true;
+  m_result.integration_seconds =
+      m_seconds_before + std::chrono::duration<double>(Clock::now() - m_loop_start).count();
+  m_result.force_evaluations += m_f.count();
+}
+
 void Run::restore(const Checkpoint& c) {
   if (c.fingerprint != fingerprint(m_params, m_network)) {
     throw InputError(m_params.checkpoint_path, 0,
                      "checkpoint belongs to a run with other parameters or another network "
                      "(fingerprints differ); remove it or drop --resume");
   }
-  if (c.replicas != m_width || c.k_index < 0 ||
-      c.k_index >= static_cast<int>(m_params.K.size())) {
+  if (c.replicas != m_width || c.k_index < 0 || c.k_index >= static_cast<int>(m_params.K.size())) {
     throw InputError(m_params.checkpoint_path, 0, "checkpoint does not fit this run");
   }
   m_state.theta = scatter(c.theta);
@@ -300,9 +314,9 @@ void Run::restore(const Checkpoint& c) {
   m_f.update(m_state);
   m_k_start = c.k_index;
   m_seg = Segment{};
-  m_seg.R = BatchMeans(steps_for(m_params.duration, m_params.h) -
-                           steps_for(m_params.transient, m_params.h),
-                       m_params.batches, m_width);
+  m_seg.R = BatchMeans(
+      steps_for(m_params.duration, m_params.h) - steps_for(m_params.transient, m_params.h),
+      m_params.batches, m_width);
   m_seg.step = c.segment_step;
   m_seg.R.restore(c.batch_count, c.batch_sums);
   m_seg.energy0 = c.energy0;
@@ -315,7 +329,8 @@ void Run::restore(const Checkpoint& c) {
   if (m_params.node_data) {
     m_seg.stats = NodeStatistics(m_state.first_row, m_state.rows, m_params.rotor_node,
                                  rotor_samples(), m_params.phase_bins, c.momentum0[0] / m_n);
-    m_seg.stats.restore(scatter(c.node_rows, 6), c.node_globals, ParallelSession::rank() == 0);
+    m_seg.stats.restore(scatter(c.node_rows, NodeStatistics::k_row_width), c.node_globals,
+                        ParallelSession::rank() == 0);
   }
   m_result.points = c.points;
   m_result.series = c.series;
@@ -348,7 +363,8 @@ void Run::finish_segment(int k_index) {
     point.phase_histogram = std::move(stats.phase_histogram);
     point.rotor_theta_bar = std::move(stats.rotor_theta_bar);
     point.rotor_p_bar = std::move(stats.rotor_p_bar);
-    point.frame = {stats.omega, stats.phi};
+    point.psi_frequency = std::move(stats.psi_frequency);
+    point.frame = {stats.omega, stats.phi, stats.omega_momentum};
   }
   m_result.points.push_back(std::move(point));
 }
@@ -400,6 +416,13 @@ SimulationResult Run::execute() {
       if (m_seg.step % m_params.record_stride == 0 || m_seg.step == steps) {
         record(k);
         progress(k, false);
+        // SIGINT/SIGTERM (interrupt.hpp): every rank stops at the same record, after a final
+        // checkpoint, so --resume continues from here.
+        if (ParallelSession::max(static_cast<double>(interrupt_signal())) > 0.0) {
+          maybe_checkpoint(k, true);
+          finish_interrupted();
+          return m_result;
+        }
         if (m_seg.step < steps) maybe_checkpoint(k, false);
       }
     }
@@ -441,7 +464,8 @@ void validate(const SimulationParameters& p) {
   for (const auto& r : p.replicas) {
     if (!positive(r.sigma0)) throw ParameterError("sigma0", std::to_string(r.sigma0), "sigma0 > 0");
   }
-  if (p.record_stride < 1) throw ParameterError("record stride", std::to_string(p.record_stride), ">= 1");
+  if (p.record_stride < 1)
+    throw ParameterError("record stride", std::to_string(p.record_stride), ">= 1");
   if (p.phase_bins < 1) throw ParameterError("phase bins", std::to_string(p.phase_bins), ">= 1");
   if (p.rotor_node < 0) throw ParameterError("rotor node", std::to_string(p.rotor_node), ">= 0");
   if (p.batches < 2) throw ParameterError("batches", std::to_string(p.batches), ">= 2");

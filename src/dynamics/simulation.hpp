@@ -30,12 +30,12 @@ struct SimulationParameters {
   /// false: each K restarts from the initial condition.
   bool continue_state = true;
   std::vector<InitialCondition> replicas{InitialCondition{}};
-  int record_stride = 100;          ///< steps between time-series records
-  int batches = 20;                 ///< batch means for the SEM of <R>_t
-  double energy_tolerance = 1e-2;   ///< stop when |E - E0| / |E0| exceeds this
-  bool node_data = false;           ///< per-node statistics over [T1, T2] (PointResult)
-  NodeIndex rotor_node = 0;         ///< node_data: the rotor whose (theta_bar, p_bar) is sampled
-  int phase_bins = 72;              ///< node_data: bins of the psi_n - psi_1 histogram
+  int record_stride = 100;         ///< steps between time-series records
+  int batches = 20;                ///< batch means for the SEM of <R>_t
+  double energy_tolerance = 1e-2;  ///< stop when |E - E0| / |E0| exceeds this
+  bool node_data = false;          ///< per-node statistics over [T1, T2] (PointResult)
+  NodeIndex rotor_node = 0;        ///< node_data: the rotor whose (theta_bar, p_bar) is sampled
+  int phase_bins = 72;             ///< node_data: bins of the psi_n - psi_1 histogram
   std::string integrator = "leapfrog";
   std::string checkpoint_path;      ///< empty: no checkpoints
   double checkpoint_seconds = 5.0;  ///< wall time between checkpoints (also at each K's end)
@@ -51,18 +51,19 @@ void validate(const SimulationParameters& params);
 
 struct PointResult {
   double K = 0.0;
-  std::vector<double> R_mean, R_sem;           ///< per replica
-  std::vector<double> energy_rel_error_max;    ///< per replica, over the whole segment
-  std::vector<double> momentum_drift;          ///< per replica: max |P(t) - P(0)| / sum |p_n(0)|
-  std::vector<double> R_node;                  ///< N x replicas: <R_n>_t (node_data)
-  std::vector<double> omega_node;              ///< N x replicas: Omega_n (node_data)
+  std::vector<double> R_mean, R_sem;         ///< per replica
+  std::vector<double> energy_rel_error_max;  ///< per replica, over the whole segment
+  std::vector<double> momentum_drift;        ///< per replica: max |P(t) - P(0)| / sum |p_n(0)|
+  std::vector<double> R_node;                ///< N x replicas: <R_n>_t (node_data)
+  std::vector<double> omega_node;            ///< N x replicas: Omega_n (node_data)
   // node_data, replica 0 (see node_statistics.hpp):
-  std::vector<double> r_node;                  ///< r_n of eq:rnDef, N
-  std::vector<double> fluctuation;             ///< Re<z_n e^{-i theta_bar_n}>_t, N
-  std::vector<double> synchronised;            ///< <r_n cos theta_bar_n>_t, N
-  std::vector<double> phase_histogram;         ///< psi_n - psi_1 counts over [-pi, pi)
+  std::vector<double> r_node;                        ///< r_n of eq:rnDef, N
+  std::vector<double> fluctuation;                   ///< Re<z_n e^{-i theta_bar_n}>_t, N
+  std::vector<double> synchronised;                  ///< <r_n cos theta_bar_n>_t, N
+  std::vector<double> phase_histogram;               ///< psi_n - psi_1 counts over [-pi, pi)
   std::vector<double> rotor_theta_bar, rotor_p_bar;  ///< samples of the chosen rotor
-  std::vector<double> frame;                   ///< {Omega = P/N, phi}
+  std::vector<double> psi_frequency;                 ///< N: mean rate of the unwrapped psi_n
+  std::vector<double> frame;  ///< {measured frame frequency Omega, phi, P/N} (node_statistics.hpp)
 };
 
 struct TimeSeries {
@@ -75,11 +76,11 @@ struct SimulationResult {
   TimeSeries series;
   std::int64_t steps = 0;
   std::int64_t force_evaluations = 0;
-  double integration_seconds = 0.0;  ///< the stepping loop only (no set-up, no I/O)
+  double integration_seconds = 0.0;   ///< the stepping loop only (no set-up, no I/O)
   EdgeOffset nnz_per_evaluation = 0;  ///< summed over ranks
   std::string force_name;
   bool resumed = false;
-  bool interrupted = false;  ///< stopped by stop_after_steps: points are incomplete
+  bool interrupted = false;  ///< stopped by stop_after_steps or a signal: points incomplete
 };
 
 /// NaN/Inf or an energy error beyond the tolerance.

@@ -7,6 +7,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "io/node_count_limit.hpp"
 #include "io/text_scanner.hpp"
 
 namespace hmfnet {
@@ -74,6 +75,14 @@ ReadResult read_edge_list(const std::string& path, const ReadOptions& options) {
                            std::to_string(largest + base) + " appears");
     }
     n = static_cast<NodeIndex>(declared_nodes);
+  }
+  const auto stored = static_cast<std::int64_t>(entries.size());
+  if (options.edge_list_nodes == 0 && stored > 0 && n > max_nodes_for_entries(stored)) {
+    throw InputError(path, 0,
+                     std::to_string(n) + " nodes for " + std::to_string(stored) +
+                         " edges: at most " + std::to_string(max_nodes_for_entries(stored)) +
+                         " without an explicit node count (mostly isolated nodes; see "
+                         "io/node_count_limit.hpp)");
   }
   BuildResult built = build_network(path, n, std::move(entries),
                                     {EntrySymmetry::symmetric, AsymmetryPolicy::reject,

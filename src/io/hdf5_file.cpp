@@ -1,5 +1,8 @@
 #include "io/hdf5_file.hpp"
 
+#include <algorithm>
+#include <limits>
+
 #include "core/error.hpp"
 
 namespace hmfnet {
@@ -14,6 +17,25 @@ struct SilenceHdf5 {
 void silence() { static const SilenceHdf5 once; }
 
 hsize_t length_of(std::size_t n) { return static_cast<hsize_t>(n); }
+
+// Deflate, the usual HDF5 filter, expands data at most 1032-fold (zlib technical details).
+constexpr hsize_t k_max_compression_ratio = 1032;
+
+// The readers allocate the length a dataspace declares before H5Dread, and a corrupted dataspace
+// (or one never written) can declare 10^18 values in a 5 KiB file (found by tests/fuzz). The
+// values must be stored: the declared bytes may exceed the stored bytes only by what compression
+// explains. A corrupted layout message can overstate the storage too, so the file size caps it.
+void require_stored(const Hdf5File& f, hid_t set, hid_t type, const std::string& name,
+                    hsize_t count) {
+  hsize_t file_size = 0;
+  if (H5Fget_filesize(f.id(), &file_size) < 0) f.fail("cannot get the file size");
+  const hsize_t stored = std::min(H5Dget_storage_size(set), file_size);
+  const std::size_t value_size = H5Tget_size(type);
+  if (count > 0 && (value_size == 0 || count > stored * k_max_compression_ratio / value_size)) {
+    f.fail("dataset " + name + " declares " + std::to_string(count) + " values but stores only " +
+           std::to_string(stored) + " bytes");
+  }
+}
 
 }  // namespace
 
@@ -95,6 +117,7 @@ std::size_t Hdf5File::dataset_length(hid_t set, const std::string& name,
   if (H5Sget_simple_extent_ndims(space.get()) != 1) fail("dataset " + name + " is not 1-D");
   hsize_t dims[1] = {0};
   H5Sget_simple_extent_dims(space.get(), dims, nullptr);
+  require_stored(*this, set, type.get(), name, dims[0]);
   return static_cast<std::size_t>(dims[0]);
 }
 
@@ -160,6 +183,10 @@ std::vector<double> Hdf5File::read_matrix(hid_t where, const std::string& name, 
   if (H5Sget_simple_extent_ndims(space.get()) != 2) fail("dataset " + name + " is not 2-D");
   hsize_t dims[2] = {0, 0};
   H5Sget_simple_extent_dims(space.get(), dims, nullptr);
+  if (dims[1] > 0 && dims[0] > std::numeric_limits<hsize_t>::max() / dims[1]) {
+    fail("dataset " + name + " has an impossible shape");
+  }
+  require_stored(*this, set.get(), type.get(), name, dims[0] * dims[1]);
   rows = static_cast<std::size_t>(dims[0]);
   cols = static_cast<std::size_t>(dims[1]);
   std::vector<double> v(rows * cols);
@@ -203,9 +230,24 @@ bool Hdf5File::has_attribute(hid_t where, const std::string& name) const {
   return H5Aexists(where, name.c_str()) > 0;
 }
 
-std::string Hdf5File::string_attribute(hid_t where, const std::string& name) const {
-  if (!has_attribute(where, name)) fail("missing attribute " + name);
+namespace {
+// H5Aread fills as many values as the attribute's dataspace holds, and the readers below pass a
+// buffer for one: an attribute stored as an array (a corrupted or foreign file; tests/fuzz)
+// would overflow it, so anything but exactly one value is refused first.
+H5Id open_scalar_attribute(const Hdf5File& f, hid_t where, const std::string& name) {
+  if (!f.has_attribute(where, name)) f.fail("missing attribute " + name);
   H5Id attr(H5Aopen(where, name.c_str(), H5P_DEFAULT), H5Aclose);
+  if (attr.get() < 0) f.fail("cannot open attribute " + name);
+  H5Id space(H5Aget_space(attr.get()), H5Sclose);
+  if (space.get() < 0 || H5Sget_simple_extent_npoints(space.get()) != 1) {
+    f.fail("attribute " + name + " is not a single value");
+  }
+  return attr;
+}
+}  // namespace
+
+std::string Hdf5File::string_attribute(hid_t where, const std::string& name) const {
+  const H5Id attr = open_scalar_attribute(*this, where, name);
   H5Id type(H5Aget_type(attr.get()), H5Tclose);
   if (H5Tget_class(type.get()) != H5T_STRING || H5Tis_variable_str(type.get()) > 0) {
     fail("attribute " + name + " is not a fixed-length string");
@@ -217,16 +259,14 @@ std::string Hdf5File::string_attribute(hid_t where, const std::string& name) con
 }
 
 std::int64_t Hdf5File::int_attribute(hid_t where, const std::string& name) const {
-  if (!has_attribute(where, name)) fail("missing attribute " + name);
-  H5Id attr(H5Aopen(where, name.c_str(), H5P_DEFAULT), H5Aclose);
+  const H5Id attr = open_scalar_attribute(*this, where, name);
   std::int64_t value = 0;
   if (H5Aread(attr.get(), H5T_NATIVE_INT64, &value) < 0) fail("cannot read attribute " + name);
   return value;
 }
 
 double Hdf5File::double_attribute(hid_t where, const std::string& name) const {
-  if (!has_attribute(where, name)) fail("missing attribute " + name);
-  H5Id attr(H5Aopen(where, name.c_str(), H5P_DEFAULT), H5Aclose);
+  const H5Id attr = open_scalar_attribute(*this, where, name);
   double value = 0.0;
   if (H5Aread(attr.get(), H5T_NATIVE_DOUBLE, &value) < 0) fail("cannot read attribute " + name);
   return value;

@@ -9,6 +9,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "io/node_count_limit.hpp"
 #include "io/text_scanner.hpp"
 
 namespace hmfnet {
@@ -83,6 +84,7 @@ ReadResult read_matrix_market(const std::string& path, const ReadOptions& option
   std::vector<std::string_view> t;
   if (!next_data_line(in, line, t)) in.fail("truncated: no size line 'ROWS COLS ENTRIES'");
   if (t.size() != 3) in.fail("size line must be 'ROWS COLS ENTRIES'");
+  const std::int64_t size_line = in.line_number();
   const std::int64_t rows = in.parse_integer(t[0], "row count");
   const std::int64_t cols = in.parse_integer(t[1], "column count");
   const std::int64_t declared = in.parse_integer(t[2], "entry count");
@@ -115,6 +117,13 @@ ReadResult read_matrix_market(const std::string& path, const ReadOptions& option
   if (static_cast<std::int64_t>(entries.size()) < declared) {
     in.fail("truncated: " + std::to_string(declared) + " entries declared, " +
             std::to_string(entries.size()) + " found");
+  }
+  const auto stored = static_cast<std::int64_t>(entries.size());
+  if (stored > 0 && rows > max_nodes_for_entries(stored)) {
+    throw InputError(path, size_line,
+                     std::to_string(rows) + " nodes for " + std::to_string(stored) +
+                         " entries: at most " + std::to_string(max_nodes_for_entries(stored)) +
+                         " (mostly isolated nodes; see io/node_count_limit.hpp)");
   }
   BuildResult built = build_network(path, static_cast<NodeIndex>(rows), std::move(entries),
                                     {header.symmetry, options.asymmetry, 1});

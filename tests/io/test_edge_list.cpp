@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "io/edge_list.hpp"
+#include "io/node_count_limit.hpp"
 #include "support/io_helpers.hpp"
 
 using namespace hmfnet;
@@ -272,4 +273,29 @@ TEST_CASE("Edge-list reader refuses a '# nodes' line smaller than an index in th
   TempDirectory dir;
   test::write_text(dir.file("n.txt"), "# nodes 2\n0 1\n1 2\n");
   REQUIRE_THROWS_WITH(read_edge_list(dir.file("n.txt")), Catch::Contains("'# nodes 2'"));
+}
+
+// Found by tests/fuzz (crashes/edge_list/oom-85da4e...): one edge "0 1214748364" made the reader
+// allocate 9.7 GB of row pointers for a 15-byte file.
+TEST_CASE(
+    "Edge-list reader refuses a node count that one edge cannot back instead of allocating "
+    "it [fuzz: node count]",
+    "[io][edge_list]") {
+  TempDirectory dir;
+  SECTION("large index on the only edge") {
+    const auto e = read_error(dir, "big.txt", "0\t1214748364\n1\t2\r\n");
+    require_input_error(e, dir.file("big.txt"), 0, "1214748365 nodes for 2 edges: at most");
+  }
+  SECTION("large '# nodes' line") {
+    const auto e = read_error(dir, "big.txt", "# nodes 2000000000\n0 1\n");
+    require_input_error(e, dir.file("big.txt"), 0, "2000000000 nodes for 1 edges: at most");
+  }
+  SECTION("the limit itself is accepted: 2^20 + 64 nodes for one edge") {
+    write_text(dir.file("edge.txt"),
+               "# nodes " + std::to_string(max_nodes_for_entries(1)) + "\n0 1\n");
+    CHECK(read_edge_list(dir.file("edge.txt")).network.size() == (1 << 20) + 64);
+    const auto e = read_error(
+        dir, "over.txt", "# nodes " + std::to_string(max_nodes_for_entries(1) + 1) + "\n0 1\n");
+    require_input_error(e, dir.file("over.txt"), 0, "nodes for 1 edges: at most 1048640");
+  }
 }

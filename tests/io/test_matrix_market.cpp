@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "io/matrix_market.hpp"
+#include "io/node_count_limit.hpp"
 #include "support/io_helpers.hpp"
 
 using namespace hmfnet;
@@ -372,4 +373,28 @@ TEST_CASE("Matrix Market writer to a missing directory throws and creates nothin
       [&] { write_matrix_market(path, test::unweighted_network_with_loops()); });
   require_input_error(e, path, 0, "does not exist");
   CHECK(dir.listing().empty());
+}
+
+// The size line "2000000000 2000000000 1" with one entry made the reader allocate 16 GB of row
+// pointers for a 70-byte file: the bug the edge-list fuzzer found (tests/fuzz), kept as
+// crashes/matrix_market/size_line_2e9_nodes.mtx.
+TEST_CASE(
+    "Matrix Market reader refuses a node count its entries cannot back instead of "
+    "allocating it [fuzz: node count]",
+    "[io][matrix_market]") {
+  TempDirectory dir;
+  SECTION("2*10^9 nodes, one entry") {
+    const auto e =
+        read_error(dir, "big.mtx", k_pattern_symmetric + "% c\n2000000000 2000000000 1\n1 1\n");
+    require_input_error(e, dir.file("big.mtx"), 3, "2000000000 nodes for 1 entries: at most");
+  }
+  SECTION("the limit itself is accepted, one more node is not") {
+    const std::string n = std::to_string(max_nodes_for_entries(2));
+    write_text(dir.file("edge.mtx"), k_pattern_symmetric + n + " " + n + " 2\n2 1\n1 1\n");
+    CHECK(read_matrix_market(dir.file("edge.mtx")).network.size() == (1 << 20) + 128);
+    const std::string over = std::to_string(max_nodes_for_entries(2) + 1);
+    const auto e =
+        read_error(dir, "over.mtx", k_pattern_symmetric + over + " " + over + " 2\n2 1\n1 1\n");
+    require_input_error(e, dir.file("over.mtx"), 2, "nodes for 2 entries: at most 1048704");
+  }
 }

@@ -290,3 +290,78 @@ TEST_CASE("HDF5 network writer to a missing directory throws and creates nothing
   require_input_error(e, path, 0, "does not exist");
   CHECK(dir.listing().empty());
 }
+
+namespace {
+
+// Replaces the attribute NAME of OBJECT by an array of `count` copies of `value`: the same name
+// and type class, but not one value.
+void make_array_attribute(const std::string& path, const std::string& object,
+                          const std::string& name, hid_t file_type, const void* values,
+                          hsize_t count) {
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  REQUIRE(file >= 0);
+  const hid_t where = H5Oopen(file, object.c_str(), H5P_DEFAULT);
+  REQUIRE(H5Adelete(where, name.c_str()) >= 0);
+  const hid_t space = H5Screate_simple(1, &count, nullptr);
+  const hid_t attr = H5Acreate2(where, name.c_str(), file_type, space, H5P_DEFAULT, H5P_DEFAULT);
+  REQUIRE(attr >= 0);
+  CHECK(H5Awrite(attr, file_type, values) >= 0);
+  H5Aclose(attr);
+  H5Sclose(space);
+  H5Oclose(where);
+  H5Fclose(file);
+}
+
+}  // namespace
+
+// Found while writing tests/fuzz, reproduced by crashes/network_hdf5/*_attribute_array.h5: H5Aread
+// fills every value of the attribute's dataspace into a buffer for one (an AddressSanitizer
+// stack-buffer-overflow in the fuzz build).
+TEST_CASE("HDF5 network reader refuses an attribute stored as an array [fuzz: attribute shape]",
+          "[io][hdf5]") {
+  TempDirectory dir;
+  const std::string path = valid_file(dir);
+  SECTION("integer attribute format_version") {
+    const std::vector<std::int64_t> versions(64, 1);
+    make_array_attribute(path, "/", "format_version", H5T_NATIVE_INT64, versions.data(), 64);
+    const auto e = input_error_from([&] { read_network_hdf5(path); });
+    require_input_error(e, path, 0, "attribute format_version is not a single value");
+  }
+  SECTION("string attribute hmfnet_format") {
+    const hid_t type = H5Tcopy(H5T_C_S1);
+    H5Tset_size(type, 7);
+    std::string values;
+    for (int k = 0; k < 64; ++k) values += "network";
+    make_array_attribute(path, "/", "hmfnet_format", type, values.data(), 64);
+    H5Tclose(type);
+    const auto e = input_error_from([&] { read_network_hdf5(path); });
+    require_input_error(e, path, 0, "attribute hmfnet_format is not a single value");
+  }
+}
+
+// Found by tests/fuzz (crashes/network_hdf5/crash-2aa902...): a corrupted dataspace declared far
+// more values than the file holds, and the reader allocated them before H5Dread failed.
+TEST_CASE(
+    "HDF5 network reader refuses a dataset that declares more values than it stores "
+    "[fuzz: dataset length]",
+    "[io][hdf5]") {
+  TempDirectory dir;
+  const std::string path = valid_file(dir);
+  {
+    // 2^40 column indices declared and never written: HDF5 allocates no storage for them.
+    delete_object(path, "/network/col");
+    const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    REQUIRE(file >= 0);
+    const hsize_t length = hsize_t{1} << 40;
+    const hid_t space = H5Screate_simple(1, &length, nullptr);
+    const hid_t set = H5Dcreate2(file, "/network/col", H5T_STD_I32LE, space, H5P_DEFAULT,
+                                 H5P_DEFAULT, H5P_DEFAULT);
+    REQUIRE(set >= 0);
+    H5Dclose(set);
+    H5Sclose(space);
+    H5Fclose(file);
+  }
+  const auto e = input_error_from([&] { read_network_hdf5(path); });
+  require_input_error(e, path, 0,
+                      "dataset col declares 1099511627776 values but stores only 0 bytes");
+}

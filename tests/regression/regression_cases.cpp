@@ -8,12 +8,16 @@
 // count changes last bits, which the chaotic dynamics amplify by at most ~e^(Lyapunov * T) ~ 1e3
 // over the 5 time units stored. The maximal relative energy error is itself a difference of
 // nearly equal energies (~1e-8 of H), so it is compared to 1e-12 absolute, not relatively.
+// Theory curves to 1e-10 relative: each solve stops at a relative residual of 1e-12, and the
+// solution's sensitivity to the residual grows like 1 / (K/K_c - 1) <= 10 on the grid stored
+// (K/K_c >= 1.1), so two solves may differ by ~2e-11; G, K_c and gamma are closed forms.
 #include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
 
 #include "core/atomic_file.hpp"
+#include "core/error.hpp"
 #include "dynamics/network_force.hpp"
 #include "dynamics/simulation.hpp"
 #include "io/hdf5_file.hpp"
@@ -23,7 +27,11 @@
 #include "parallel/distributed_network.hpp"
 #include "parallel/parallel_session.hpp"
 #include "spectral/perron.hpp"
+#include "theory/critical_coupling.hpp"
+#include "theory/growth_rate.hpp"
+#include "theory/large_k_limit.hpp"
 #include "theory/onset_amplitude.hpp"
+#include "theory/self_consistent.hpp"
 
 using namespace hmfnet;
 
@@ -41,8 +49,9 @@ Values network_case(const Network& net) {
   Values v;
   v.integer.push_back({"row_ptr", net.row_ptr()});
   v.integer.push_back({"col", std::vector<std::int64_t>(net.cols().begin(), net.cols().end())});
-  v.real.push_back({"spectrum", {perron.lambda, degree_correlation(net),
-                                 onset_amplitude(perron.lambda, mean_degree(net), perron.u)}});
+  v.real.push_back({"spectrum",
+                    {perron.lambda, degree_correlation(net),
+                     onset_amplitude(perron.lambda, mean_degree(net), perron.u)}});
   return v;
 }
 
@@ -73,6 +82,38 @@ Values simulation_case() {
   return v;
 }
 
+// The theory curves of one seeded network: K_c, G, gamma(K/K_c) (eq:gammaKKc), R(K) of
+// eq:rSigmaBesselMain, R_hat of eq:KtoInfinity and of eq:rd.
+Values theory_case() {
+  const Network net = erdos_renyi({2000, 0.01, 1});
+  const DistributedNetwork d(net);
+  const PerronResult perron = perron_eigenpair(d);
+  const double sigma0 = 0.35;
+  const double Kc = critical_coupling(sigma0, net.size(), perron.lambda);
+  const std::vector<double> ratios{1.1, 1.5, 2.0, 3.0, 5.0};
+  std::vector<double> Ks, gamma;
+  for (const double x : ratios) {
+    Ks.push_back(x * Kc);
+    gamma.push_back(growth_rate(x, sigma0));
+  }
+  SelfConsistentOptions options;
+  options.tolerance = 1e-12;
+  const SelfConsistentSystem system(net, perron.lambda, sigma0, 0.0, perron.u);
+  std::vector<double> R;
+  for (const SelfConsistentSolution& s : system.sweep(Ks, options)) {
+    if (s.status != SolveStatus::converged) throw ConvergenceError("theory case: " + s.message);
+    R.push_back(s.R);
+  }
+  const LargeKLimit large = solve_large_k_limit(net, options);
+  Values v;
+  v.real.push_back(
+      {"closed_forms", {Kc, onset_amplitude(perron.lambda, mean_degree(net), perron.u)}});
+  v.real.push_back({"gamma", gamma});
+  v.real.push_back({"R_of_K", R});
+  v.real.push_back({"R_hat", {large.R_hat, degree_approximation_R_hat(net.degrees())}});
+  return v;
+}
+
 struct Case {
   std::string name;
   Values values;
@@ -83,7 +124,8 @@ std::vector<Case> all_cases() {
           {"sf_n2000_alpha25_seed1",
            network_case(chung_lu(power_law_targets(2000, {2.5, 10.0, 1999}, 1),
                                  LinkProbability::capped, 1))},
-          {"simulation_er_n500", simulation_case()}};
+          {"simulation_er_n500", simulation_case()},
+          {"theory_er_n2000", theory_case()}};
 }
 
 void write(const std::string& dir, const Case& c) {
@@ -102,7 +144,9 @@ int compare(const std::string& dir, const Case& c) {
   const std::string path = dir + "/" + c.name + ".h5";
   const Hdf5File f(path, Hdf5File::Mode::read);
   int failures = 0;
-  const double tolerance = c.name.rfind("simulation", 0) == 0 ? 1e-9 : 1e-12;
+  const double tolerance = c.name.rfind("simulation", 0) == 0 ? 1e-9
+                           : c.name.rfind("theory", 0) == 0   ? 1e-10
+                                                              : 1e-12;
   for (const auto& [name, data] : c.values.integer) {
     const bool same = f.read_int64(f.id(), name) == data;
     std::printf("  %s  %s/%s: exact\n", same ? "PASS" : "FAIL", c.name.c_str(), name.c_str());
@@ -150,7 +194,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "hmfnet_regression: %s\n", e.what());
     return 2;
   }
-  std::printf("%s\n", writing ? "references written" : failures == 0 ? "regression: all match"
-                                                                     : "regression: MISMATCH");
+  std::printf("%s\n", writing         ? "references written"
+                      : failures == 0 ? "regression: all match"
+                                      : "regression: MISMATCH");
   return failures == 0 ? 0 : 1;
 }

@@ -2,72 +2,81 @@
 // Bookkeeping for verification drivers: each check prints one line with our value, the
 // reference, the tolerance and where the tolerance comes from, then PASS or FAIL; the driver's
 // exit code is non-zero if any check failed.
-#include <cmath>
-#include <cstdio>
+//
+// The same records feed the paper pipeline (paper/CMakeLists.txt): with `--output F.h5` the
+// driver also writes every check and every data series it registered, so paper/REPORT.md and the
+// figures show exactly the numbers that `ctest -L verification` judged.
+#include <cstddef>
 #include <string>
+#include <vector>
 
 namespace hmfnet::verification {
 
+/// Command line shared by every driver: `--scale ci|full`, `--output F.h5`, `--report-only`.
+struct DriverOptions {
+  bool full = false;         ///< paper scale (label verification-full) instead of CI scale
+  std::string output;        ///< HDF5 results for the paper pipeline; empty: none
+  bool report_only = false;  ///< exit 0 even when a check fails (the report shows the verdict)
+};
+/// Throws ParameterError on an unknown option or a missing value.
+DriverOptions parse_driver_options(int argc, char** argv);
+
 class ClaimCheck {
  public:
-  explicit ClaimCheck(std::string claim) : m_claim(std::move(claim)) {
-    std::printf("claim: %s\n", m_claim.c_str());
-  }
+  /// `driver` names the output (and the figure scripts that read it).
+  ClaimCheck(std::string driver, std::string claim, int argc, char** argv);
+
+  bool full() const { return m_options.full; }
 
   /// |value - reference| <= rel_tol |reference|.
   bool within_rel(const std::string& what, double value, double reference, double rel_tol,
-                  const std::string& why) {
-    const double diff = (value - reference) / reference;
-    return record(std::abs(diff) <= rel_tol, what, value, reference,
-                  "diff " + format(100.0 * diff) + "%, tolerance " + format(100.0 * rel_tol) +
-                      "% (" + why + ")");
-  }
-
+                  const std::string& why);
+  /// |value - reference| <= abs_tol.
+  bool within_abs(const std::string& what, double value, double reference, double abs_tol,
+                  const std::string& why);
   /// A condition with its explanation (qualitative claims, orderings).
-  bool holds(const std::string& what, bool ok, const std::string& detail) {
-    std::printf("  %s  %s: %s\n", ok ? "PASS" : "FAIL", what.c_str(), detail.c_str());
-    m_failed += ok ? 0 : 1;
-    return ok;
-  }
-
+  bool holds(const std::string& what, bool ok, const std::string& detail);
   /// A number reported beside the paper's, without a pass/fail (the paper's value is not
   /// expected to be reproduced; the reason is printed).
-  void report(const std::string& what, double value, double paper, const std::string& note) {
-    std::printf("  INFO  %s: ours %s, paper %s (diff %s%%) %s\n", what.c_str(),
-                format(value).c_str(), format(paper).c_str(),
-                format(100.0 * (value - paper) / paper).c_str(), note.c_str());
-  }
+  void report(const std::string& what, double value, double paper, const std::string& note);
 
-  int exit_code() const {
-    std::printf("%s: %d check(s) failed\n", m_failed == 0 ? "VERIFIED" : "NOT VERIFIED", m_failed);
-    return m_failed == 0 ? 0 : 1;
-  }
+  /// Data series for the figures: 1-D, or rows x cols row-major; written under /data/NAME.
+  void data(const std::string& name, std::vector<double> values);
+  void data(const std::string& name, std::vector<double> values, std::size_t rows,
+            std::size_t cols);
+  /// A string attribute of /data (labels, JSON descriptions of the series).
+  void note(const std::string& name, std::string value);
 
-  static std::string format(double x) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.6g", x);
-    return buffer;
-  }
+  /// Prints the verdict, writes --output (atomically) and returns the exit code.
+  int exit_code();
+
+  static std::string format(double x);
 
  private:
-  bool record(bool ok, const std::string& what, double value, double reference,
-              const std::string& detail) {
-    std::printf("  %s  %s: ours %s, reference %s, %s\n", ok ? "PASS" : "FAIL", what.c_str(),
-                format(value).c_str(), format(reference).c_str(), detail.c_str());
-    m_failed += ok ? 0 : 1;
-    return ok;
-  }
+  struct Record {
+    std::string kind;  // "check" or "report"
+    std::string what;
+    double ours;
+    double reference;
+    std::string detail;
+    bool pass;
+  };
+  struct Series {
+    std::string name;
+    std::vector<double> values;
+    std::size_t rows, cols;
+  };
+  bool record(Record r);
+  void write_output(double wall_seconds) const;
 
+  std::string m_driver;
   std::string m_claim;
+  DriverOptions m_options;
+  std::vector<Record> m_records;
+  std::vector<Series> m_series;
+  std::vector<std::pair<std::string, std::string>> m_notes;
   int m_failed = 0;
+  double m_start;
 };
-
-/// `--scale full` selects the paper's sizes; the default `ci` runs what fits in CI.
-inline bool full_scale(int argc, char** argv) {
-  for (int k = 1; k + 1 < argc; ++k) {
-    if (std::string(argv[k]) == "--scale") return std::string(argv[k + 1]) == "full";
-  }
-  return false;
-}
 
 }  // namespace hmfnet::verification

@@ -1,0 +1,46 @@
+"""Fig. R_vs_K_theoretical: simulated <R>_t against eq:rSigmaBesselMain and eq:globalOrderRInDeltaK.
+
+Reads simulation_vs_theory.h5 (verification/simulation_vs_theory.cpp). Panels (a) ER q = 0.01,
+sigma0^2 = 0.12 and (b) scale-free alpha = 2.8 (Table II; the caption says 2.5), sigma0^2 = 1.
+Circles: <R>_t, mean over replicas, error bars = replica sd (larger than the batch-means SEM, which
+is drawn as the inner cap); crosses: the theory at each run's own E and P (the checked reference);
+solid line: eq:rSigmaBesselMain at the nominal sigma0 (the paper's line); dashed: G sqrt(dK/K_c).
+"""
+import matplotlib.pyplot as plt
+
+import hmfdata
+
+
+def panel(ax, result, name, title):
+    points = result.series(f"{name}_points")
+    curve = result.series(f"{name}_theory")
+    ax.plot(curve[:, 0], curve[:, 1], "k-", lw=1.2, label="eq:rSigmaBesselMain (sigma0)")
+    ax.plot(curve[:, 0], curve[:, 2], "r--", lw=1.0, label="G sqrt(dK/K_c)")
+    ax.errorbar(points[:, 0], points[:, 2], yerr=points[:, 4], fmt="o", color="tab:blue",
+                capsize=3, label="simulation (replica sd)")
+    ax.errorbar(points[:, 0], points[:, 2], yerr=points[:, 3], fmt="none", color="navy",
+                capsize=6)
+    above = points[:, 0] > 1.0
+    ax.plot(points[above, 0], points[above, 5], "x", color="k", ms=6,
+            label="theory at the run's (E, P)")
+    ax.axvline(1.0, color="0.6", lw=0.8, ls=":")
+    ax.set_xlabel("K / K_c")
+    ax.set_ylabel("<R>_t")
+    ax.set_ylim(0, 0.8)
+    ax.set_title(title)
+    ax.legend(loc="upper left")
+
+
+def main():
+    args = hmfdata.arguments(__doc__)
+    hmfdata.style()
+    result = hmfdata.load(args.data, "simulation_vs_theory")
+    fig, axes = plt.subplots(1, 2)
+    panel(axes[0], result, "ER", "(a) Erdos-Renyi, q = 0.01, sigma0^2 = 0.12")
+    panel(axes[1], result, "SF", "(b) scale-free, alpha = 2.8, sigma0^2 = 1")
+    fig.tight_layout()
+    hmfdata.save_figure(fig, args.out, "fig06_r_vs_k_theory", result.scale)
+
+
+if __name__ == "__main__":
+    main()

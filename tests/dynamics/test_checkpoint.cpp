@@ -1,0 +1,105 @@
+// Checkpoints under faults: a corrupted file is refused by its checksum, and a stop requested by
+// SIGINT/SIGTERM (interrupt.hpp) writes a final checkpoint from which --resume ends
+// bit-identical to an uninterrupted run.
+#include <hdf5.h>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <csignal>
+#include <filesystem>
+#include <vector>
+
+#include "core/error.hpp"
+#include "dynamics/checkpoint.hpp"
+#include "dynamics/interrupt.hpp"
+#include "dynamics/network_force.hpp"
+#include "dynamics/simulation.hpp"
+#include "network/erdos_renyi.hpp"
+#include "parallel/distributed_network.hpp"
+#include "parallel/parallel_session.hpp"
+#include "support/simulation_runs.hpp"
+
+using namespace hmfnet;
+using hmfnet::test::short_run;
+using hmfnet::test::temp_path;
+
+namespace {
+
+// Changes one stored angle in place, as a bit flip on disk would (the file stays valid HDF5).
+void corrupt_theta(const std::string& path) {
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  REQUIRE(file >= 0);
+  const hid_t set = H5Dopen2(file, "theta", H5P_DEFAULT);
+  REQUIRE(set >= 0);
+  const hid_t space = H5Dget_space(set);
+  std::vector<double> theta(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
+  REQUIRE(H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, theta.data()) >= 0);
+  theta[theta.size() / 2] = std::nextafter(theta[theta.size() / 2], 10.0);
+  REQUIRE(H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, theta.data()) >= 0);
+  H5Sclose(space);
+  H5Dclose(set);
+  H5Fclose(file);
+}
+
+void remove_on_root(const std::string& path) {
+  ParallelSession::max(0.0);
+  if (ParallelSession::rank() == 0) std::filesystem::remove(path);
+  ParallelSession::max(0.0);
+}
+
+}  // namespace
+
+TEST_CASE("A checkpoint changed on disk is refused by its checksum [ER N=200]", "[checkpoint]") {
+  const Network net = erdos_renyi({200, 0.05, 6});
+  const DistributedNetwork d(net);
+  NetworkForce force(d);
+  SimulationParameters p = short_run();
+  p.checkpoint_path = temp_path("hmfnet_test_corrupt_checkpoint");
+  remove_on_root(p.checkpoint_path);
+  p.checkpoint_seconds = 0.0;
+  p.stop_after_steps = 50;
+  simulate(d, net.degrees(), force, p);
+  ParallelSession::max(0.0);
+  REQUIRE_NOTHROW(read_checkpoint(p.checkpoint_path));  // intact: accepted
+  ParallelSession::max(0.0);  // every rank has closed it before the root changes it
+  if (ParallelSession::rank() == 0) corrupt_theta(p.checkpoint_path);
+  ParallelSession::max(0.0);
+  REQUIRE_THROWS_WITH(read_checkpoint(p.checkpoint_path), Catch::Contains("checksum mismatch"));
+  p.stop_after_steps = 0;
+  p.resume = true;
+  REQUIRE_THROWS_AS(simulate(d, net.degrees(), force, p), InputError);
+  remove_on_root(p.checkpoint_path);
+}
+
+TEST_CASE("A signal stops the run with a final checkpoint that resumes bit-identically [ER N=300]",
+          "[checkpoint]") {
+  const Network net = erdos_renyi({300, 0.05, 6});
+  const DistributedNetwork d(net);
+  NetworkForce force(d);
+  SimulationParameters p = short_run();
+  const SimulationResult whole = simulate(d, net.degrees(), force, p);
+
+  p.checkpoint_path = temp_path("hmfnet_test_signal_checkpoint");
+  remove_on_root(p.checkpoint_path);
+  p.checkpoint_seconds = 1e9;  // only the forced ones: the stop must write its own
+  set_interrupt_signal(SIGTERM);
+  const SimulationResult stopped = simulate(d, net.degrees(), force, p);
+  set_interrupt_signal(0);
+  REQUIRE(stopped.interrupted);
+  REQUIRE(stopped.steps == p.record_stride);  // stopped at the first record
+  ParallelSession::max(0.0);
+  REQUIRE(read_checkpoint(p.checkpoint_path).steps_total == p.record_stride);
+
+  p.resume = true;
+  const SimulationResult resumed = simulate(d, net.degrees(), force, p);
+  REQUIRE(resumed.resumed);
+  REQUIRE_FALSE(resumed.interrupted);
+  REQUIRE(resumed.points.size() == whole.points.size());
+  for (std::size_t k = 0; k < whole.points.size(); ++k) {
+    REQUIRE(resumed.points[k].R_mean == whole.points[k].R_mean);
+    REQUIRE(resumed.points[k].energy_rel_error_max == whole.points[k].energy_rel_error_max);
+  }
+  REQUIRE(resumed.series.energy == whole.series.energy);
+  REQUIRE(resumed.steps == whole.steps);
+  remove_on_root(p.checkpoint_path);
+}

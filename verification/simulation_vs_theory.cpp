@@ -1,0 +1,276 @@
+// Verification: simulated <R>_t against the self-consistent synchronized state (Fig.
+// R_vs_K_theoretical, eq:rSigmaBesselMain) and its near-onset form (eq:globalOrderRInDeltaK).
+//
+// Claim: "The theory agrees with the simulations, except that when K < K_c the observed order
+//   parameter R is not zero [...] because of finite-size effects" for (a) ER, q = 0.01,
+//   sigma0^2 = 0.12 and (b) scale-free, sigma0^2 = 1, N = 10^4, ||d|| = 100. Panel (b) uses
+//   alpha = 2.8 (Table II); the caption says alpha = 2.5, d_min = 33 (recorded as a note).
+// Run:   verification_simulation_vs_theory [--scale ci|full]   (ctest -L verification)
+//        ci: N = 2000 with ||d|| = 100 (the same degree, so the same finite-size floor), K/K_c in
+//        {0.5, 2, 3, 4}, per K T2 = 600, T1 = 300, h = 0.02 (h omega_max <= 0.15 here), 2
+//        replicas; full: N = 10^4, the same K, the paper's T2 = 1000, T1 = 500, h = 0.01.
+// Protocol: every K starts from the incoherent state (not the paper's sweep). The theory is a
+//   function of the conserved E and P of the start (eq:Hsub0, eq:sigmaSqEq); raising K at a fixed
+//   synchronized state changes E by (K2 - K1) U / K1 < 0, so a swept state has less energy than
+//   the theory's fresh start and sits above the paper's line (measured, N = 2000, T = 120 per K:
+//   0.619 against 0.542 at 4 K_c). Both are handled by the reference below.
+// Reference: eq:rSigmaBesselMain on the same network with mu0 = sigma0^2 + 2 U0 / N = 2E/N -
+//   (P/N)^2 from each replica's own conserved E and P, so the comparison is free of the
+//   O(sqrt(2/N)) sample error of sigma0^2 (3% at N = 2000, which moves K_c by as much). The
+//   paper's line (nominal sigma0, U0 = 0) is reported beside it and drawn.
+// Where: the checks are at K/K_c >= 2. Nearer onset the relaxation time grows like
+//   1/(K/K_c - 1) and the finite-size floor (~1/sqrt(||d||) = 0.1) is comparable to R itself.
+//   Even at 3 K_c the approach to the stationary value is slow (the HMF model's long-lived
+//   quasi-stationary states): ER N = 2000, <R>_t over [60, 120] 0.471, [200, 400] 0.496,
+//   [400, 800] 0.500 against 0.513. So at CI scale the per-point agreement is reported, and
+//   what is checked is the direction of the relaxation: <R> over the second half of [T1, T2]
+//   is not above the theory (+ tolerance) and, unless already within the tolerance, not farther
+//   below it than over the first half (+ 2 sqrt(2) SEM, the noise of the difference of two
+//   half-window means). At full scale
+//   (the paper's T) the agreement itself is checked.
+// Tolerance per point: |<R>_sim - R_theory| <= 3 SEM + delta_fs. SEM: the batch-means standard
+//   error of <R>_t (20 batches) combined over replicas. delta_fs = sqrt(R^2 + R_floor^2) - R:
+//   the incoherent part of each local field (variance <= d/N^2 per node, 1 - v^2 per neighbour
+//   in the synchronized state against 1 below onset) adds to the coherent part in quadrature,
+//   so the finite-size level measured below onset, R_floor = <R>_t at K = K_c/2, bounds it.
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "dynamics/network_force.hpp"
+#include "dynamics/simulation.hpp"
+#include "network/chung_lu.hpp"
+#include "network/degree_statistics.hpp"
+#include "network/erdos_renyi.hpp"
+#include "parallel/distributed_network.hpp"
+#include "parallel/parallel_session.hpp"
+#include "spectral/perron.hpp"
+#include "support/claim_check.hpp"
+#include "theory/critical_coupling.hpp"
+#include "theory/onset_amplitude.hpp"
+#include "theory/self_consistent.hpp"
+
+using namespace hmfnet;
+using verification::ClaimCheck;
+
+namespace {
+
+struct Scale {
+  NodeIndex n;
+  std::vector<double> K_over_Kc;
+  double duration, transient, h;
+  int replicas;
+};
+
+struct Panel {
+  std::string name;
+  Network net;
+  double sigma0;
+};
+
+// The theory depends on the initial state only through the conserved E and P (eq:Hsub0,
+// eq:MomentumConserved): mu0 = sigma0^2 + 2 U0 / N = 2 E / N - (P / N)^2. Read from the last
+// record at K of replica b (E is constant within a K up to the integrator's error).
+double incoherent_variance(const SimulationResult& sim, double K, std::size_t b, double n) {
+  const auto B = sim.points.front().R_mean.size();
+  std::size_t last = 0;
+  for (std::size_t i = 0; i < sim.series.K.size(); ++i) {
+    if (sim.series.K[i] == K) last = i;
+  }
+  const double P = sim.series.momentum[last * B + b] / n;
+  return 2.0 * sim.series.energy[last * B + b] / n - P * P;
+}
+
+struct PointStats {
+  std::vector<double> mean, sem, sd;  ///< <R>_t over replicas: mean, combined SEM, replica sd
+  std::vector<double> theory;         ///< eq:rSigmaBesselMain at each replica's E and P
+  std::vector<double> nominal;        ///< eq:rSigmaBesselMain at sigma0, U0 = 0 (paper's line)
+  bool converged = true;
+};
+
+PointStats point_statistics(const Panel& panel, const PerronResult& perron,
+                            const SimulationParameters& p, const SimulationResult& sim) {
+  const std::size_t B = p.replicas.size(), nk = p.K.size();
+  const double n = static_cast<double>(panel.net.size());
+  PointStats st{std::vector<double>(nk, 0.0),
+                std::vector<double>(nk, 0.0),
+                std::vector<double>(nk, 0.0),
+                std::vector<double>(nk, 0.0),
+                {},
+                true};
+  for (std::size_t k = 0; k < nk; ++k) {
+    for (std::size_t b = 0; b < B; ++b) {
+      const double mu0 = incoherent_variance(sim, p.K[k], b, n);
+      // mu0 = sigma0^2 - K c0 (self_consistent.hpp); late in a sweep mu0 can reach 0 or below.
+      const double c0 = (panel.sigma0 * panel.sigma0 - mu0) / p.K[k];
+      const SelfConsistentSystem system(panel.net, perron.lambda, panel.sigma0, c0, perron.u);
+      const SelfConsistentSolution sol = system.solve(p.K[k]);
+      st.converged = st.converged && sol.status != SolveStatus::failed;
+      st.theory[k] += sol.R / static_cast<double>(B);
+      st.mean[k] += sim.points[k].R_mean[b] / static_cast<double>(B);
+      st.sem[k] += sim.points[k].R_sem[b] * sim.points[k].R_sem[b];
+    }
+    st.sem[k] = std::sqrt(st.sem[k]) / static_cast<double>(B);
+    for (std::size_t b = 0; b < B; ++b) {
+      const double e = sim.points[k].R_mean[b] - st.mean[k];
+      st.sd[k] += B > 1 ? e * e / static_cast<double>(B - 1) : 0.0;
+    }
+    st.sd[k] = std::sqrt(st.sd[k]);
+  }
+  const SelfConsistentSystem nominal(panel.net, perron.lambda, panel.sigma0, 0.0, perron.u);
+  for (const auto& sol : nominal.sweep(p.K, {})) {
+    st.converged = st.converged && sol.status != SolveStatus::failed;
+    st.nominal.push_back(sol.R);
+  }
+  return st;
+}
+
+// <R> over the first and the second half of [T1, T2] at the k-th K, over replicas: the
+// direction of the relaxation (see the header, "Where").
+struct Halves {
+  double early = 0.0, late = 0.0;
+};
+
+Halves half_means(const SimulationResult& sim, const SimulationParameters& p, std::size_t k) {
+  const std::size_t B = p.replicas.size();
+  std::vector<double> R;  // replica-mean R of the records of this K inside [T1, T2]
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < sim.series.K.size(); ++i) {
+    if (sim.series.K[i] != p.K[k]) continue;
+    const double t = static_cast<double>(++j * static_cast<std::size_t>(p.record_stride)) * p.h;
+    if (t <= p.transient) continue;
+    double mean = 0.0;
+    for (std::size_t b = 0; b < B; ++b) mean += sim.series.R[i * B + b] / static_cast<double>(B);
+    R.push_back(mean);
+  }
+  Halves h;
+  const std::size_t m = R.size() / 2;
+  for (std::size_t i = 0; i < R.size(); ++i) {
+    (i < m ? h.early : h.late) += R[i] / static_cast<double>(i < m ? m : R.size() - m);
+  }
+  return h;
+}
+
+// K/K_c >= 2: against the theory at the run's own E and P (checked at full scale; at CI scale
+// the direction of the relaxation is checked and the gap reported); 1 < K/K_c < 2: reported;
+// the paper's line (nominal sigma0, U0 = 0) reported beside it.
+void compare_point(ClaimCheck& check, const std::string& name, double x, const PointStats& st,
+                   std::size_t k, double floor, const Halves& halves) {
+  const double th = st.theory[k];
+  const double tol = 3.0 * st.sem[k] + std::sqrt(th * th + floor * floor) - th;
+  std::printf(
+      "  INFO  %s: K/K_c %-5g <R>_t %.4f +- %.4f (SEM), replica sd %.4f; theory at (E, P) "
+      "%.4f, at sigma0 %.4f; tol %.4f\n",
+      name.c_str(), x, st.mean[k], st.sem[k], st.sd[k], th, st.nominal[k], tol);
+  const std::string what = name + ": <R>_t at K/K_c = " + ClaimCheck::format(x);
+  if (x >= 2.0 && check.full()) {
+    check.within_abs(what + " vs theory at the run's (E, P)", st.mean[k], th, tol,
+                     "3 SEM + finite-size floor in quadrature");
+  } else if (x >= 2.0) {
+    check.report(what + " vs theory at the run's (E, P), CI scale", st.mean[k], th,
+                 "(not relaxed by T2 at CI scale; checked at full scale; tolerance there: " +
+                     ClaimCheck::format(tol) + ")");
+    // sqrt(2) SEM: each half has half the samples.
+    const double noise = 2.0 * std::sqrt(2.0) * st.sem[k];
+    check.holds(what + ": relaxes toward the theory from below",
+                halves.late <= th + tol &&
+                    (th - halves.late <= tol || th - halves.late <= th - halves.early + noise),
+                "theory " + ClaimCheck::format(th) + ", first half " +
+                    ClaimCheck::format(halves.early) + ", second half " +
+                    ClaimCheck::format(halves.late) + " (not above theory + tol " +
+                    ClaimCheck::format(tol) +
+                    "; within tol, or the gap not growing beyond "
+                    "2 sqrt(2) SEM)");
+  } else if (x > 1.0) {
+    check.report(what + " vs theory at the run's (E, P)", st.mean[k], th,
+                 "near onset: finite T lags the stationary state (critical slowing)");
+  }
+  if (x > 1.0) {
+    check.report(what + " vs the paper's line (sigma0, U0 = 0)", st.mean[k], st.nominal[k],
+                 "the paper's solid line; differs from ours by the sample's sigma0 and U0");
+  }
+}
+
+// Step 3 for one panel: the sweep, the theory per replica, the checks and the figure data.
+void check_panel(ClaimCheck& check, const Panel& panel, const Scale& sc) {
+  const DistributedNetwork d(panel.net);
+  const PerronResult perron = perron_eigenpair(d);
+  const double Kc = critical_coupling(panel.sigma0, panel.net.size(), perron.lambda);
+  const double G = onset_amplitude(perron.lambda, mean_degree(panel.net), perron.u);
+  SimulationParameters p;
+  p.h = sc.h;
+  p.duration = sc.duration;
+  p.transient = sc.transient;
+  for (const double k : sc.K_over_Kc) p.K.push_back(k * Kc);
+  p.replicas.clear();
+  for (int b = 0; b < sc.replicas; ++b) {
+    p.replicas.push_back({6.0, panel.sigma0, static_cast<std::uint64_t>(100 + b)});
+  }
+  p.record_stride = 100;
+  // Each K from the incoherent state: the theory's E and P are those of that state.
+  p.continue_state = false;
+  NetworkForce force(d);
+  const SimulationResult sim = simulate(d, panel.net.degrees(), force, p);
+  std::printf("  INFO  %s: lambda %.2f, K_c %.4g, G %.3f; %.0f s of integration\n",
+              panel.name.c_str(), perron.lambda, Kc, G, sim.integration_seconds);
+
+  const PointStats st = point_statistics(panel, perron, p, sim);
+  check.holds(panel.name + ": every eq:rSigmaBesselMain solve converged", st.converged,
+              "relative residual <= 1e-10");
+  const double floor = st.mean[0];
+  std::printf("  INFO  %s: finite-size floor <R>_t(K_c/2) = %.4f (1/sqrt(<d>) = %.4f)\n",
+              panel.name.c_str(), floor, 1.0 / std::sqrt(mean_degree(panel.net)));
+  std::vector<double> table;
+  for (std::size_t k = 0; k < sc.K_over_Kc.size(); ++k) {
+    const double x = sc.K_over_Kc[k];
+    compare_point(check, panel.name, x, st, k, floor, half_means(sim, p, k));
+    // Figure data: rows K/K_c, columns as in the note columns_points.
+    for (const double v : {x, p.K[k], st.mean[k], st.sem[k], st.sd[k], st.theory[k], st.nominal[k],
+                           onset_order_parameter(G, x)}) {
+      table.push_back(v);
+    }
+  }
+  check.data(panel.name + "_points", table, sc.K_over_Kc.size(), 8);
+  // The theory curve on a fine grid (nominal sigma0, c0 = 0: the paper's solid line).
+  std::vector<double> Ks, curve;
+  for (int i = 0; i <= 80; ++i) Ks.push_back(Kc * (1.0 + 0.0005 + 3.5 * i / 80.0));
+  const SelfConsistentSystem nominal(panel.net, perron.lambda, panel.sigma0, 0.0, perron.u);
+  const auto sol = nominal.sweep(Ks, {});
+  for (std::size_t i = 0; i < Ks.size(); ++i) {
+    for (const double v : {Ks[i] / Kc, sol[i].R, onset_order_parameter(G, Ks[i] / Kc)}) {
+      curve.push_back(v);
+    }
+  }
+  check.data(panel.name + "_theory", curve, Ks.size(), 3);
+  check.data(panel.name + "_constants", {Kc, perron.lambda, G, panel.sigma0, floor});
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ParallelSession session(&argc, &argv);
+  ClaimCheck check("simulation_vs_theory",
+                   "simulated <R>_t follows eq:rSigmaBesselMain above onset (Fig. "
+                   "R_vs_K_theoretical)",
+                   argc, argv);
+  // Step 1: scale.
+  const Scale sc = check.full() ? Scale{10000, {0.5, 2, 3, 4}, 1000.0, 500.0, 0.01, 2}
+                                : Scale{2000, {0.5, 2, 3, 4}, 600.0, 300.0, 0.02, 2};
+  check.note("columns_points",
+             "[\"K/K_c\", \"K\", \"R\", \"SEM\", \"replica sd\", \"theory (E, P)\", "
+             "\"theory (sigma0)\", \"G sqrt(dK/K_c)\"]");
+  check.note("columns_theory", "[\"K/K_c\", \"theory\", \"G sqrt(dK/K_c)\"]");
+  check.note("alpha", "panel (b): alpha = 2.8 (Table II), caption says 2.5 with d_min = 33");
+  // Step 2: the two networks, ||d|| = 100.
+  const double q = erdos_renyi_probability(sc.n, 100.0);
+  const double d_min = power_law_d_min_for_mean(2.8, 100.0);
+  const std::vector<Panel> panels{
+      {"ER", erdos_renyi({sc.n, q, 1}), std::sqrt(0.12)},
+      {"SF",
+       chung_lu(power_law_targets(sc.n, {2.8, d_min, sc.n - 1.0}, 1), LinkProbability::capped, 1),
+       1.0}};
+  // Step 3: simulate, solve, compare.
+  for (const Panel& panel : panels) check_panel(check, panel, sc);
+  return check.exit_code();
+}

@@ -1,0 +1,241 @@
+#pragma once
+// The onset of synchrony measured from a K sweep, shared by the drivers of Figs. ERPLnet, PLcorr
+// and ERstdP (onset_er_sf, onset_rewired, onset_sigma0).
+//
+// Sweep: the paper's protocol (Sec. numericalExperiments): K raised in steps from 0, each K
+// continuing from the current state, <R>_t over [T1, T2] (eq:timeAverage). The grid is given in
+// x = K / K_c with K_c = 2 sigma0^2 N / lambda (eq:criticalKFirstOrder), so every network is
+// sampled at the same lambda K / (2 sigma0^2 N); B replicas (seeds of the initial condition)
+// run side by side.
+//
+// Equilibration (critical slowing down): above K_c the state relaxes from the previous grid
+//   point's state on the time scale of the growth rate gamma(x) of eq:gammaKKc
+//   (theory/growth_rate.hpp; gamma ~ sqrt(2/pi) sigma0 (1 - 1/x) near onset: 0.027 at x = 1.1,
+//   0.052 at 1.2 for sigma0 = 0.35). Measured (ER <d> = 50, sigma0 = 0.35 and ER <d> = 100,
+//   sigma0 = 0.2, N = 1000, 3 replicas, 600 time units per K, means over 25-unit windows): the
+//   approach of <R> to its plateau is slower than 1/gamma, time constant tau ~ 6-9 / gamma at
+//   x = 1.35-3 (e.g. x = 1.35, sigma0 = 0.35: R 0.249 -> 0.30 over ~200 time units); the steps
+//   between grid points are Delta R ~ 0.05. A segment of T2 at one K is therefore used only if
+//   the time already spent at that K before its average starts is at least kEquilibrationEfolds /
+//   gamma(x) (= 15 / gamma ~ 2 tau: the residual lag is <~ e^-2 Delta R ~ 0.007 at the start of the
+//   average, less over it, below the per-point error ~0.01-0.02). A grid point gets m repeated
+//   segments at its K (a repeated K continues the state; the first m - 1 are relaxation) with
+//   the smallest m for which its last segment qualifies, if m <= max_segments; otherwise one
+//   segment, and the point is shown but not equilibrated. Points at x <= 1 have no growing mode
+//   (gamma undefined) and are never equilibrated in this sense; they are not needed by the fit
+//   (theory R = 0 there). A point's <R> is the mean over its qualifying segments (its last
+//   segment when none qualifies).
+//
+// Onset rule (one rule for simulation and theory, on the same points):
+//   excess E(x) = sqrt(max(<R>^2 - R0^2, 0)), R0 = <R>_t at K = 0: the finite-size floor
+//   (R ~ ||sqrt d|| / ||d|| of incoherent rotors, Sec. numericalExperiments), removed in
+//   quadrature because the incoherent fluctuation and the coherent part add as independent
+//   vectors. Near onset E^2 grows linearly in K (eq:globalOrderRInDeltaK), so x_on is the zero of
+//   the weighted least-squares line through (x, E^2) over the equilibrated grid points with
+//   kWindowLow <= E <= kWindowHigh (at least 3): below 0.1 the excess is dominated by the
+//   near-critical enhancement of the floor fluctuations (E ~ 0.07 at x = 0.9 measured, ER
+//   <d> = 100, N = 1000), above 0.35 R^2 bends away from the line (eq:globalOrderRInDeltaK holds
+//   only near K_c). The theory curve (eq:rSigmaBesselMain of the same network, R = 0 below K_c,
+//   no floor) goes through the same fit on the same points with the same weights: x_on(theory)
+//   is where the rule puts the onset of a system that follows the theory exactly, so
+//   x_on - x_on(theory) is free of the rule's curvature bias x_on(theory) - 1.
+// Errors: a point's error is the larger of the replica spread sd / sqrt(B) and the batch-means
+//   SEM of the time average / sqrt(B) (both of the mean over its qualifying segments);
+//   dE^2 = 2 R dR. The standard error of x_on follows from the covariance of the fitted line
+//   (weights 1 / dE^2^2), x_on = -a / b: var = (var a + x_on^2 var b + 2 x_on cov ab) / b^2.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "dynamics/network_force.hpp"
+#include "dynamics/simulation.hpp"
+#include "network/network.hpp"
+#include "parallel/distributed_network.hpp"
+#include "spectral/perron.hpp"
+#include "support/sample_statistics.hpp"
+#include "theory/growth_rate.hpp"
+#include "theory/self_consistent.hpp"
+
+namespace hmfnet::verification {
+
+/// c of the equilibration criterion: time at K before a segment's average >= c / gamma(x).
+constexpr double kEquilibrationEfolds = 15.0;
+constexpr double kWindowLow = 0.1;
+constexpr double kWindowHigh = 0.35;
+
+struct SweepProtocol {
+  std::vector<double> x;   ///< K / K_c, increasing, x[0] = 0 (the floor R0)
+  double h = 0.01;         ///< leap-frog step
+  double duration = 1000;  ///< T2 per segment
+  double transient = 500;  ///< T1 per segment
+  int max_segments = 4;    ///< repeated segments allowed per grid point (>= 1)
+  int replicas = 3;        ///< initial-condition seeds 1..B (times seed_base)
+  std::uint64_t seed_base = 1000;
+  double omega = 6.0;
+};
+
+struct OnsetCurve {
+  double lambda = 0.0, Kc = 0.0, sigma0 = 0.0;
+  std::vector<double> x, K;
+  std::vector<double> R, R_err;      ///< replica mean of <R>_t and its error
+  std::vector<double> R_theory;      ///< eq:rSigmaBesselMain (0 below K_c)
+  std::vector<double> segments;      ///< segments run at each grid point
+  std::vector<double> equilibrated;  ///< 1: at least one segment met the criterion
+  std::vector<double> fitted;        ///< 1: used by the onset fit
+  double R0 = 0.0;
+  double x_on = NAN, x_on_err = NAN;  ///< simulation onset and its statistical error
+  double x_on_theory = NAN;           ///< the same fit on the theory curve
+  int points = 0;                     ///< grid points in the fit
+  double time_units = 0.0;            ///< simulated time per replica
+};
+
+struct Onset {
+  double x = NAN, err = NAN;
+};
+
+/// Time at K = x K_c before an average may start: kEquilibrationEfolds / gamma(x); infinite at
+/// x <= 1 (no growing mode).
+inline double equilibration_time(double x, double sigma0) {
+  return x > 1.0 ? kEquilibrationEfolds / growth_rate(x, sigma0) : INFINITY;
+}
+
+/// Segments for one grid point: the smallest m with (m - 1) T2 + T1 >= equilibration_time, if
+/// m <= max_segments; otherwise 1.
+inline int segments_for(double x, double sigma0, const SweepProtocol& p) {
+  const double t = equilibration_time(x, sigma0);
+  if (!std::isfinite(t)) return 1;
+  const double m = 1.0 + std::max(0.0, std::ceil((t - p.transient) / p.duration));
+  return m <= p.max_segments ? static_cast<int>(m) : 1;
+}
+
+/// Zero of the weighted line through (x, R^2 - R0^2) over the points with use[k]; the weights
+/// 1 / (2 R_w dR_w)^2 come from (R_w, dR_w), so theory and simulation share them. NaN with fewer
+/// than 3 points.
+inline Onset extrapolated_onset(const std::vector<double>& x, const std::vector<double>& R,
+                                double R0, const std::vector<double>& R_w,
+                                const std::vector<double>& R_err_w,
+                                const std::vector<double>& use) {
+  double S = 0, Sx = 0, Sy = 0, Sxx = 0, Sxy = 0;
+  int points = 0;
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    if (use[k] == 0.0) continue;
+    const double sigma = std::max(2.0 * R_w[k] * R_err_w[k], 1e-12);
+    const double w = 1.0 / (sigma * sigma), E2 = R[k] * R[k] - R0 * R0;
+    S += w, Sx += w * x[k], Sy += w * E2, Sxx += w * x[k] * x[k], Sxy += w * x[k] * E2;
+    ++points;
+  }
+  Onset onset;
+  if (points < 3) return onset;
+  const double det = S * Sxx - Sx * Sx;
+  const double slope = (S * Sxy - Sx * Sy) / det, intercept = (Sxx * Sy - Sx * Sxy) / det;
+  const double var_a = Sxx / det, var_b = S / det, cov = -Sx / det;
+  onset.x = -intercept / slope;
+  onset.err = std::sqrt(std::max(var_a + onset.x * onset.x * var_b + 2.0 * onset.x * cov, 0.0)) /
+              std::abs(slope);
+  return onset;
+}
+
+/// One grid point from its segments [first, first + m): the mean over the qualifying segments
+/// (the last one if none qualifies) of the replica means, and its error.
+inline void reduce_point(OnsetCurve& c, const SimulationResult& r, std::size_t first, int m,
+                         double t_eq, const SweepProtocol& p) {
+  std::vector<std::size_t> used;
+  for (int j = 0; j < m; ++j)
+    if (j * p.duration + p.transient >= t_eq) used.push_back(first + static_cast<std::size_t>(j));
+  c.equilibrated.push_back(used.empty() ? 0.0 : 1.0);
+  if (used.empty()) used.push_back(first + static_cast<std::size_t>(m - 1));
+  const std::size_t B = r.points[first].R_mean.size();
+  const double n = static_cast<double>(used.size());
+  std::vector<double> per_replica(B, 0.0);
+  double sem2 = 0.0;
+  for (const std::size_t i : used)
+    for (std::size_t b = 0; b < B; ++b) {
+      per_replica[b] += r.points[i].R_mean[b] / n;
+      sem2 += r.points[i].R_sem[b] * r.points[i].R_sem[b] / (n * n);
+    }
+  // sem2 sums B replicas' SEM^2 of the segment mean: its rms over replicas.
+  const double sem = std::sqrt(sem2 / static_cast<double>(B));
+  const MeanSd m_sd = mean_sd(per_replica);
+  c.R.push_back(m_sd.mean);
+  c.R_err.push_back(std::max(m_sd.sd, sem) / std::sqrt(static_cast<double>(B)));
+}
+
+/// The theory curve on the grid: eq:rSigmaBesselMain above the threshold, 0 below.
+inline void theory_curve(OnsetCurve& c, const Network& net, const PerronResult& perron) {
+  const SelfConsistentSystem system(net, c.lambda, c.sigma0, 0.0, perron.u);
+  std::vector<double> above;
+  for (const double K : c.K)
+    if (K > system.threshold()) above.push_back(K);
+  const std::vector<SelfConsistentSolution> s = system.sweep(above, SelfConsistentOptions{});
+  std::size_t j = 0;
+  for (const double K : c.K) {
+    const bool solved = K > system.threshold() && s[j].status == SolveStatus::converged;
+    c.R_theory.push_back(K > system.threshold() ? (solved ? s[j].R : NAN) : 0.0);
+    if (K > system.threshold()) ++j;
+  }
+}
+
+/// Steps 1-3 for one network: lambda, the simulated sweep, the theory curve, both onsets.
+inline OnsetCurve measure_onset(const Network& net, double sigma0, const SweepProtocol& protocol) {
+  OnsetCurve c;
+  const DistributedNetwork distributed(net);
+  const PerronResult perron = perron_eigenpair(distributed);
+  c.lambda = perron.lambda;
+  c.sigma0 = sigma0;
+  c.Kc = 2.0 * sigma0 * sigma0 * static_cast<double>(net.size()) / c.lambda;
+  c.x = protocol.x;
+  for (const double x : c.x) c.K.push_back(x * c.Kc);
+  theory_curve(c, net, perron);
+  SimulationParameters p;
+  for (std::size_t k = 0; k < c.x.size(); ++k) {
+    const int m = segments_for(c.x[k], sigma0, protocol);
+    c.segments.push_back(m);
+    p.K.insert(p.K.end(), static_cast<std::size_t>(m), c.K[k]);
+  }
+  c.time_units = static_cast<double>(p.K.size()) * protocol.duration;
+
+  p.h = protocol.h;
+  p.duration = protocol.duration;
+  p.transient = protocol.transient;
+  p.continue_state = true;
+  p.replicas.clear();
+  for (int b = 1; b <= protocol.replicas; ++b)
+    p.replicas.push_back(
+        {protocol.omega, sigma0, protocol.seed_base + static_cast<std::uint64_t>(b)});
+  p.record_stride = 1000;
+  NetworkForce force(distributed);
+  const SimulationResult r = simulate(distributed, net.degrees(), force, p);
+  std::size_t first = 0;
+  for (std::size_t k = 0; k < c.x.size(); ++k) {
+    const int m = static_cast<int>(c.segments[k]);
+    reduce_point(c, r, first, m, equilibration_time(c.x[k], sigma0), protocol);
+    first += static_cast<std::size_t>(m);
+  }
+  c.R0 = c.R.front();
+
+  // The fit's points: equilibrated, excess inside the window.
+  for (std::size_t k = 0; k < c.x.size(); ++k) {
+    const double E = std::sqrt(std::max(c.R[k] * c.R[k] - c.R0 * c.R0, 0.0));
+    const bool use = c.equilibrated[k] != 0.0 && E >= kWindowLow && E <= kWindowHigh &&
+                     std::isfinite(c.R_theory[k]);
+    c.fitted.push_back(use ? 1.0 : 0.0);
+    c.points += use ? 1 : 0;
+  }
+  const Onset sim = extrapolated_onset(c.x, c.R, c.R0, c.R, c.R_err, c.fitted);
+  c.x_on = sim.x;
+  c.x_on_err = sim.err;
+  c.x_on_theory = extrapolated_onset(c.x, c.R_theory, 0.0, c.R, c.R_err, c.fitted).x;
+  return c;
+}
+
+/// Rows of a figure array: one per curve, the same grid length.
+inline std::vector<double> stack(const std::vector<OnsetCurve>& curves,
+                                 std::vector<double> OnsetCurve::*member) {
+  std::vector<double> out;
+  for (const OnsetCurve& c : curves) out.insert(out.end(), (c.*member).begin(), (c.*member).end());
+  return out;
+}
+
+}  // namespace hmfnet::verification
