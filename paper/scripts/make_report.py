@@ -61,7 +61,8 @@ SECTIONS = [
      ["fig10_max_synchrony"]),
     ("Speed against accuracy (not in the paper)",
      "The paper integrates with leap-frog, h = 0.01. Which method and step give every figure "
-     "at its statistical precision for the least work?", ["work_precision"], ["work_precision"]),
+     "at its statistical precision for the least work? Where does each method fail?",
+     ["work_precision", "stability_limit"], ["work_precision"]),
     ("Conservation laws",
      "H and the total momentum are conserved (eq:hamiltonianNetworkCase); the symplectic "
      "leap-frog's energy error stays bounded.", ["conservation"], []),

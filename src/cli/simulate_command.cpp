@@ -148,6 +148,14 @@ void run(const SimulateFlags& f) {
   const PerronResult perron = perron_eigenpair(distributed);
   const double Kc = critical_coupling(f.sigma0, net.size(), perron.lambda);
   const SimulationParameters params = parameters(f, Kc);
+  // Before any work: every output location must hold what the run will write (a checkpoint in
+  // the same directory as the results counts against the same space).
+  const std::uintmax_t results_bytes =
+      f.output.empty() ? 0 : estimated_run_file_bytes(params, net.size());
+  const std::uintmax_t checkpoint_bytes =
+      f.checkpoint.empty() ? 0 : estimated_checkpoint_bytes(params, net.size());
+  if (!f.output.empty()) require_free_space(f.output, results_bytes + checkpoint_bytes);
+  if (!f.checkpoint.empty()) require_free_space(f.checkpoint, results_bytes + checkpoint_bytes);
   auto force = choose_force(f, net, distributed);
   install_interrupt_handlers();
   const SimulationResult result = simulate(distributed, net.degrees(), *force, params);

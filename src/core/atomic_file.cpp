@@ -27,6 +27,22 @@ void require_writable_destination(const std::string& path) {
   if (fs::is_directory(path)) throw InputError(path, 0, "cannot write: is a directory");
 }
 
+void require_free_space(const std::string& path, std::uintmax_t bytes) {
+  namespace fs = std::filesystem;
+  const fs::path dir =
+      fs::path(path).parent_path().empty() ? fs::path(".") : fs::path(path).parent_path();
+  std::error_code error;
+  const fs::space_info space = fs::space(dir, error);
+  if (error) return;  // unknown (e.g. a special file system): the write itself will tell
+  if (space.available >= bytes) return;
+  const auto megabytes = [](std::uintmax_t b) {
+    return std::to_string((b + (1u << 20) - 1) >> 20) + " MB";
+  };
+  throw InputError(path, 0,
+                   "not enough free space: the run's output needs about " + megabytes(bytes) +
+                       ", '" + dir.string() + "' has " + megabytes(space.available));
+}
+
 AtomicFile::AtomicFile(std::string final_path) : m_final(std::move(final_path)) {
   require_writable_destination(m_final);
   // pid + a per-process counter: distinct temporaries for concurrent writers of one path.

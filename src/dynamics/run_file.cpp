@@ -1,5 +1,8 @@
 #include "dynamics/run_file.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/atomic_file.hpp"
 #include "hmfnet/version.hpp"
 
@@ -72,7 +75,8 @@ void write_results(const Hdf5File& f, const std::vector<PointResult>& points,
   }
   for (const auto& [name, field] : k_per_point_vector) {
     const auto data = stack(points, field);
-    if (!data.empty()) f.write_matrix(pg.get(), name, data, points.size(), data.size() / points.size());
+    if (!data.empty())
+      f.write_matrix(pg.get(), name, data, points.size(), data.size() / points.size());
   }
   const H5Id tg = f.create_group("timeseries");
   f.write(tg.get(), "t", series.t);
@@ -101,6 +105,41 @@ void read_results(const Hdf5File& f, std::vector<PointResult>& points, TimeSerie
   series.R = f.read_matrix(tg.get(), "R", rows, cols);
   series.energy = f.read_matrix(tg.get(), "energy", rows, cols);
   series.momentum = f.read_matrix(tg.get(), "momentum", rows, cols);
+}
+
+namespace {
+
+// Doubles stored for the results: per point and replica 4 values; per record t, K and 3 per
+// replica; with node data per point 2 N per replica, 5 N (r, fluctuation, synchronised,
+// psi_frequency and slack) and the histogram and rotor samples.
+double result_doubles(const SimulationParameters& p, double n) {
+  const double points = static_cast<double>(p.K.size());
+  const double replicas = static_cast<double>(p.replicas.size());
+  const double steps = std::ceil(p.duration / p.h);
+  const double records = points * (steps / std::max(1, p.record_stride) + 1.0);
+  double doubles = points * (4.0 * replicas + 8.0) + records * (2.0 + 3.0 * replicas);
+  if (p.node_data) {
+    const double rotor = (p.duration - p.transient) / p.h / std::max(1, p.record_stride) + 1.0;
+    doubles += points * (n * (2.0 * replicas + 5.0) + p.phase_bins + 2.0 * rotor);
+  }
+  return doubles;
+}
+
+constexpr double k_metadata_bytes = 1 << 20;
+
+}  // namespace
+
+std::uintmax_t estimated_run_file_bytes(const SimulationParameters& params, NodeIndex n) {
+  return static_cast<std::uintmax_t>(8.0 * result_doubles(params, n) + k_metadata_bytes);
+}
+
+std::uintmax_t estimated_checkpoint_bytes(const SimulationParameters& params, NodeIndex n) {
+  // The results so far plus the state (theta, p), the node-data accumulators (theta_T1,
+  // R_node_sum, 8 per-row sums) and the batch sums.
+  const double N = static_cast<double>(n), replicas = static_cast<double>(params.replicas.size());
+  double state = 2.0 * N * replicas + 64.0 * replicas;
+  if (params.node_data) state += 2.0 * N * replicas + 8.0 * N;
+  return static_cast<std::uintmax_t>(8.0 * (result_doubles(params, N) + state) + k_metadata_bytes);
 }
 
 void write_run_file(const std::string& path, const SimulationResult& result,

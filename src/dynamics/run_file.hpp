@@ -7,6 +7,7 @@
 //   /points/R_node, /points/omega_node              [points * N x replicas] (node data only)
 //   /timeseries/t, /timeseries/K                     [records]
 //   /timeseries/R, energy, momentum                  [records x replicas]
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,12 @@ struct RunMetadata {
   std::string provenance_json;  ///< version, commit, command line, ranks, threads, wall time
   double Kc = 0.0;              ///< 0: unknown
 };
+
+/// Upper estimates of the bytes a run writes (its results file; one checkpoint), from the
+/// parameters alone, for the free-space check at start-up: 8 bytes per stored double, the
+/// per-point, per-node and time-series arrays of the schema above, plus 1 MiB of HDF5 metadata.
+std::uintmax_t estimated_run_file_bytes(const SimulationParameters& params, NodeIndex n);
+std::uintmax_t estimated_checkpoint_bytes(const SimulationParameters& params, NodeIndex n);
 
 /// Writes to a temporary and renames: an interrupted run leaves no file under `path`.
 void write_run_file(const std::string& path, const SimulationResult& result,

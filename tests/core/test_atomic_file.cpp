@@ -1,8 +1,9 @@
 // AtomicFile: an output appears under its final name only on commit(), never partially, and a
 // destination that cannot be written is reported before any work is done.
+#include <unistd.h>
+
 #include <catch2/catch.hpp>
 #include <filesystem>
-#include <unistd.h>
 
 #include "core/atomic_file.hpp"
 #include "support/io_helpers.hpp"
@@ -81,8 +82,8 @@ TEST_CASE("AtomicFile throws at construction for a missing directory [no dir]", 
   TempDirectory dir;
   const std::string path = dir.file("no/such/dir/out.txt");
   const auto e = input_error_from([&] { AtomicFile file(path); });
-  require_input_error(e, path, 0, "cannot write: directory '" + dir.file("no/such/dir") +
-                                       "' does not exist");
+  require_input_error(e, path, 0,
+                      "cannot write: directory '" + dir.file("no/such/dir") + "' does not exist");
   CHECK(dir.listing().empty());
 }
 
@@ -116,9 +117,10 @@ TEST_CASE("AtomicFile rejects an empty path [empty]", "[atomic_file]") {
   require_input_error(e, "<output>", 0, "empty output path");
 }
 
-TEST_CASE("AtomicFile commit without a written temporary throws naming the final path "
-          "[nothing written]",
-          "[atomic_file]") {
+TEST_CASE(
+    "AtomicFile commit without a written temporary throws naming the final path "
+    "[nothing written]",
+    "[atomic_file]") {
   TempDirectory dir;
   const std::string path = dir.file("out.txt");
   AtomicFile file(path);
@@ -143,4 +145,16 @@ TEST_CASE("AtomicFile writes a bare file name into the current directory [relati
   }
   CHECK(read_text(dir.file("out.txt")) == "here");
   CHECK(dir.listing() == std::vector<std::string>{"out.txt"});
+}
+
+TEST_CASE("A destination without room for the output is refused at start-up [free space]",
+          "[atomic_file]") {
+  TempDirectory dir;
+  const std::string path = dir.file("results.h5");
+  REQUIRE_NOTHROW(require_free_space(path, 1));
+  const auto available = fs::space(dir.path()).available;
+  const auto e = input_error_from([&] { require_free_space(path, available + (1u << 30)); });
+  REQUIRE(e.has_value());
+  CHECK(e->file() == path);
+  CHECK_THAT(e->cause(), Catch::Contains("not enough free space") && Catch::Contains("MB"));
 }

@@ -13,6 +13,7 @@
 #include "dynamics/checkpoint.hpp"
 #include "dynamics/interrupt.hpp"
 #include "dynamics/network_force.hpp"
+#include "dynamics/run_file.hpp"
 #include "dynamics/simulation.hpp"
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
@@ -102,4 +103,30 @@ TEST_CASE("A signal stops the run with a final checkpoint that resumes bit-ident
   REQUIRE(resumed.series.energy == whole.series.energy);
   REQUIRE(resumed.steps == whole.steps);
   remove_on_root(p.checkpoint_path);
+}
+
+TEST_CASE("The output size estimates bound the files a run writes [ER N=200]", "[checkpoint]") {
+  const Network net = erdos_renyi({200, 0.05, 6});
+  const DistributedNetwork d(net);
+  NetworkForce force(d);
+  SimulationParameters p = short_run();
+  p.node_data = true;
+  p.checkpoint_path = temp_path("hmfnet_test_size_checkpoint");
+  remove_on_root(p.checkpoint_path);
+  p.checkpoint_seconds = 0.0;
+  const SimulationResult r = simulate(d, net.degrees(), force, p);
+  const std::string results = temp_path("hmfnet_test_size_results");
+  if (ParallelSession::rank() == 0) write_run_file(results, r, p, {});
+  ParallelSession::max(0.0);
+  const auto run_bytes = std::filesystem::file_size(results);
+  const auto checkpoint_bytes = std::filesystem::file_size(p.checkpoint_path);
+  INFO("results " << run_bytes << " <= " << estimated_run_file_bytes(p, net.size())
+                  << ", checkpoint " << checkpoint_bytes << " <= "
+                  << estimated_checkpoint_bytes(p, net.size()));
+  REQUIRE(run_bytes <= estimated_run_file_bytes(p, net.size()));
+  REQUIRE(checkpoint_bytes <= estimated_checkpoint_bytes(p, net.size()));
+  // Not absurdly loose either: within the 1 MiB metadata allowance plus 2x the data.
+  REQUIRE(estimated_run_file_bytes(p, net.size()) <= 2 * run_bytes + (1u << 20));
+  remove_on_root(p.checkpoint_path);
+  remove_on_root(results);
 }

@@ -27,6 +27,7 @@ nlohmann::json number(double x) { return std::isfinite(x) ? nlohmann::json(x) : 
 // A driver's uncaught exception (bad option, unreadable input, unconverged solve) ends the run
 // with one line and exit code 2, not an abort that MPI reports as a crash with a stack dump.
 void error_exit() {
+  std::fflush(stdout);  // what the driver printed so far, before the error
   const std::exception_ptr current = std::current_exception();
   try {
     if (current) std::rethrow_exception(current);
