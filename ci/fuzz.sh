@@ -8,10 +8,13 @@
 # tests/fuzz/libhdf5/ with a warning (not ours to fix; see tests/fuzz/README.md).
 #   FUZZ_SECONDS=300 ci/fuzz.sh          longer run
 #   FUZZ_READERS="edge_list" ci/fuzz.sh  one reader
+#   FUZZ_SEED=0 ci/fuzz.sh               a random seed (default 1: the same run every time)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 seconds="${FUZZ_SECONDS:-60}"
+# A fixed seed makes a CI run repeat the same exploration (FUZZ_SEED=0: libFuzzer picks one).
+seed="${FUZZ_SEED:-1}"
 readers=(${FUZZ_READERS:-matrix_market edge_list network_hdf5})
 
 # clang, its runtimes (libFuzzer, sanitizers) and libomp, only when missing (ci/install-deps.sh
@@ -75,7 +78,8 @@ for reader in "${readers[@]}"; do
   [ "$reader" = network_hdf5 ] && mode=(-fork=1 -ignore_crashes=1 -ignore_ooms=1 -ignore_timeouts=1)
   echo "ci/fuzz.sh: fuzzing $reader for ${seconds} s"
   ASAN_OPTIONS="$asan" "$fuzzer" "$work/corpus-$reader" "${dict[@]}" "${limits[@]}" "${mode[@]}" \
-    -max_total_time="$seconds" -print_final_stats=1 -artifact_prefix="$work/artifacts-$reader/" \
+    -seed="$seed" -max_total_time="$seconds" -print_final_stats=1 \
+    -artifact_prefix="$work/artifacts-$reader/" \
     > "$work/$reader.log" 2>&1 || true
   grep -E '^(stat::number_of_executed_units|stat::average_exec_per_sec|stat::peak_rss_mb)' \
     "$work/$reader.log" | sed "s/^/  $reader /" || true

@@ -55,6 +55,8 @@ TEST_CASE("Network builder rejects a NaN or infinite or negative weight at its l
       {-std::numeric_limits<double>::infinity(), "weight is infinite"},
       {-2.0, "negative weight -2.000000"},
       {-std::numeric_limits<double>::denorm_min(), "negative weight"},
+      {std::numeric_limits<double>::denorm_min(), "weight 4.94e-324 is subnormal"},
+      {0.5 * std::numeric_limits<double>::min(), "is subnormal"},
   }));
   INFO("weight " << weight);
   const auto e = input_error_from(
