@@ -38,6 +38,22 @@ export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
+# The first stack frame of a sanitizer or libFuzzer report that is outside their runtimes and the
+# allocator, from the first report on: an out-of-memory report may list libFuzzer's own live
+# allocations before the stack of the allocation over the limit, and the RSS watchdog may add a
+# second report with no stack at all. Prints nothing if there is no such frame. One awk program
+# rather than a grep | grep | head pipeline: under `set -o pipefail` a grep with no match, or one
+# killed by SIGPIPE when head exits, would end the whole job with no message.
+first_frame_outside_runtimes() {
+  awk '
+    /ERROR:/ { seen = 1 }
+    !seen || !/^ +#[0-9]+ / { next }
+    / in (__interceptor_|__sanitizer|__asan|__lsan|__ubsan|fuzzer::|malloc|calloc|realloc|operator new|__mem|__str)/ { next }
+    /\(\/lib\/x86_64-linux-gnu\/libc\.so/ { next }   # the signal trampoline of a timeout report
+    { print; exit }
+  ' "$1"
+}
+
 status=0
 for reader in "${readers[@]}"; do
   fuzzer="build-fuzz/bin/fuzz_$reader"
@@ -62,6 +78,11 @@ for reader in "${readers[@]}"; do
   dict=()
   [ -f "tests/fuzz/$reader.dict" ] && dict=(-dict="tests/fuzz/$reader.dict")
   limits=(-rss_limit_mb=2048 -malloc_limit_mb=$malloc_limit -timeout=10 -max_len=$max_len)
+  # Replaying one input to sort it: twice the RSS limit, so that one huge malloc is reported by
+  # the malloc hook with its stack, not first by the RSS watchdog thread with none (a race when
+  # both limits are equal).
+  triage_limits=(-rss_limit_mb=$((2 * (malloc_limit > 1024 ? malloc_limit : 1024))) \
+    -malloc_limit_mb=$malloc_limit -timeout=10 -max_len=$max_len)
 
   # 1. The kept crashes must no longer crash (the gcc build replays them too, without sanitizers).
   if compgen -G "tests/fuzz/crashes/$reader/*" > /dev/null; then
@@ -90,27 +111,32 @@ for reader in "${readers[@]}"; do
   #    replayed); anywhere else it is ours (kept in tests/fuzz/crashes/<reader>/, fails the job).
   for input in "$work/artifacts-$reader"/*; do
     [ -e "$input" ] || continue
-    if ASAN_OPTIONS="$asan" "$fuzzer" "${limits[@]}" "$input" > "$work/triage.log" 2>&1; then
+    if ASAN_OPTIONS="$asan" "$fuzzer" "${triage_limits[@]}" "$input" > "$work/triage.log" 2>&1; then
       echo "ci/fuzz.sh: warning: $(basename "$input") did not crash again when replayed alone"
       continue
     fi
-    # Frames after the last report line: an out-of-memory report first lists libFuzzer's own
-    # live allocations, then the stack of the allocation over the limit.
-    first_frame="$(awk '/ERROR:/ { n = NR } { line[NR] = $0 } END { for (i = n; i <= NR; ++i) print line[i] }' \
-        "$work/triage.log" | grep -E '^ +#[0-9]+ ' |
-      grep -v -E ' in (__interceptor_|__sanitizer|__asan|__lsan|fuzzer::|malloc|calloc|realloc|operator new|__mem|__str)' |
-      head -n 1)"
+    first_frame="$(first_frame_outside_runtimes "$work/triage.log")"
     if [[ "$first_frame" == *libhdf5* ]]; then
       mkdir -p tests/fuzz/libhdf5
       cp "$input" tests/fuzz/libhdf5/
       echo "ci/fuzz.sh: warning: $(basename "$input") crashes inside libhdf5, not hmfnet" \
         "(kept in tests/fuzz/libhdf5/):"
       grep -m1 -E 'ERROR|SUMMARY' "$work/triage.log" || true
+    elif [ -z "$first_frame" ]; then
+      # No stack to blame: libFuzzer's RSS watchdog thread can win the race against the malloc
+      # hook and report "out-of-memory (used: ...)" with no allocation stack. Such an input is
+      # kept for a person to look at, and does not fail the job: it names no code.
+      mkdir -p tests/fuzz/unattributed
+      cp "$input" tests/fuzz/unattributed/
+      echo "ci/fuzz.sh: warning: $(basename "$input") fails without a stack to attribute it" \
+        "(kept in tests/fuzz/unattributed/):"
+      grep -m1 -E 'ERROR|SUMMARY' "$work/triage.log" || true
     else
       mkdir -p "tests/fuzz/crashes/$reader"
       cp "$input" "tests/fuzz/crashes/$reader/"
       tail -n 60 "$work/triage.log"
-      echo "ci/fuzz.sh: $reader crashed; input kept as tests/fuzz/crashes/$reader/$(basename "$input")"
+      echo "ci/fuzz.sh: $reader crashed in $first_frame"
+      echo "ci/fuzz.sh: input kept as tests/fuzz/crashes/$reader/$(basename "$input")"
       status=1
     fi
   done
