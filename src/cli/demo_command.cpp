@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/validators.hpp"
 #include "dynamics/network_force.hpp"
 #include "dynamics/simulation.hpp"
 #include "theory/critical_coupling.hpp"
@@ -123,7 +124,7 @@ void add_demo_command(CLI::App& app) {
   static DemoFlags f;
   auto* c = app.add_subcommand("demo", "Built-in default job: the paper's Tables I-II networks");
   c->add_option("--n", f.n, "Nodes per network")->check(CLI::Range(100, 1000000));
-  c->add_option("--seed", f.seed, "Random seed");
+  c->add_option("--seed", f.seed, "Random seed")->check(k_seed);
   c->callback([] { run(f); });
 }
 

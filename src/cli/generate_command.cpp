@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
-#include "cli/validators.hpp"
 #include "cli/provenance.hpp"
+#include "cli/validators.hpp"
 #include "core/atomic_file.hpp"
 #include "io/network_file.hpp"
 #include "network/chung_lu.hpp"
@@ -73,8 +73,8 @@ void run_sf(const SfFlags& f) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (is_root()) {
-    nlohmann::json p = {{"n", f.n},       {"alpha", f.alpha}, {"d_min", d_min},
-                        {"link", f.link}, {"seed", f.seed}};
+    nlohmann::json p = {
+        {"n", f.n}, {"alpha", f.alpha}, {"d_min", d_min}, {"link", f.link}, {"seed", f.seed}};
     p["cutoff"] = std::isinf(f.cutoff) ? nlohmann::json("none") : nlohmann::json(f.cutoff);
     write_network(f.output, net, provenance("generate sf", p));
   }
@@ -90,14 +90,14 @@ void add_generate_command(CLI::App& app) {
   static ErFlags er;
   auto* e = gen->add_subcommand("er", "Erdos-Renyi G(N, q): each pair linked with probability q");
   e->add_option("--n", er.n, "Number of nodes")->required()->check(CLI::Range(1, 2147483647));
-  auto* q = e->add_option("--q", er.q, "Link probability")->check(CLI::Range(0.0, 1.0));
-  auto* d = e->add_option("--mean-degree", er.mean_degree, "Mean degree (N-1) q")
-                ->check(k_non_negative);
+  auto* q = e->add_option("--q", er.q, "Link probability")->check(k_probability);
+  auto* d =
+      e->add_option("--mean-degree", er.mean_degree, "Mean degree (N-1) q")->check(k_non_negative);
   q->excludes(d);
-  e->add_option("--seed", er.seed, "Random seed")->required();
+  e->add_option("--seed", er.seed, "Random seed")->required()->check(k_seed);
   e->add_option("-o,--output", er.output, "Output file (.mtx, .h5 or edge list .txt)")->required();
-  e->callback([] {
-    if (er.q < 0.0 && er.mean_degree < 0.0) {
+  e->callback([q, d] {
+    if (q->count() == 0 && d->count() == 0) {
       throw CLI::RequiredError("one of --q or --mean-degree");
     }
     run_er(er);
@@ -107,19 +107,25 @@ void add_generate_command(CLI::App& app) {
   auto* s = gen->add_subcommand(
       "sf", "Scale-free Chung-Lu network with power-law targets P(d) ~ d^-alpha, d > d_min");
   s->add_option("--n", sf.n, "Number of nodes")->required()->check(CLI::Range(1, 2147483647));
-  s->add_option("--alpha", sf.alpha, "Power-law exponent (> 2)")->required();
-  auto* dm = s->add_option("--dmin", sf.d_min, "Smallest target degree d_min (> 0)");
+  s->add_option("--alpha", sf.alpha, "Power-law exponent (> 2)")
+      ->required()
+      ->check(greater_than(2.0));
+  auto* dm =
+      s->add_option("--dmin", sf.d_min, "Smallest target degree d_min (> 0)")->check(k_positive);
   auto* md = s->add_option("--mean-degree", sf.mean_degree,
-                           "Target mean degree: d_min solved from the continuum mean");
+                           "Target mean degree: d_min solved from the continuum mean")
+                 ->check(k_positive);
   dm->excludes(md);
-  s->add_option("--cutoff", sf.cutoff, "Largest target degree (default: none)");
-  s->add_option("--link", sf.link, "Link probability of x = w_n w_m / S: capped min(1,x) "
-                                   "(default), poisson 1-exp(-x), odds x/(1+x)")
+  s->add_option("--cutoff", sf.cutoff, "Largest target degree (default: none)")
+      ->check(k_positive_or_inf);
+  s->add_option("--link", sf.link,
+                "Link probability of x = w_n w_m / S: capped min(1,x) "
+                "(default), poisson 1-exp(-x), odds x/(1+x)")
       ->check(CLI::IsMember({"capped", "poisson", "odds"}));
-  s->add_option("--seed", sf.seed, "Random seed")->required();
+  s->add_option("--seed", sf.seed, "Random seed")->required()->check(k_seed);
   s->add_option("-o,--output", sf.output, "Output file (.mtx, .h5 or edge list .txt)")->required();
-  s->callback([] {
-    if (sf.d_min <= 0.0 && sf.mean_degree <= 0.0) {
+  s->callback([dm, md] {
+    if (dm->count() == 0 && md->count() == 0) {
       throw CLI::RequiredError("one of --dmin or --mean-degree");
     }
     run_sf(sf);

@@ -50,7 +50,7 @@ void add_rewire_command(CLI::App& app) {
   c->add_option("--target-rho", f.target_rho, "Target degree correlation rho (> 0)")
       ->required()
       ->check(k_positive);
-  c->add_option("--seed", f.seed, "Random seed")->required();
+  c->add_option("--seed", f.seed, "Random seed")->required()->check(k_seed);
   c->add_option("--max-attempts", f.max_attempts, "Swap attempts before giving up (0: 200 x edges)")
       ->check(k_non_negative);
   c->add_option("-o,--output", f.output, "Output file")->required();

@@ -233,11 +233,14 @@ void add_simulate_command(CLI::App& app) {
   c->add_option("input", f.input, "Network file (.mtx, .h5, edge list)")->required();
   c->add_option("--sigma0", f.sigma0, "Std of the initial Gaussian momenta (default 0.35)")
       ->check(k_positive);
-  c->add_option("--omega", f.omega, "Mean of the initial momenta (default 6)");
-  auto* k = c->add_option("--K", f.K, "Couplings, comma separated")->delimiter(',');
+  c->add_option("--omega", f.omega, "Mean of the initial momenta (default 6)")->check(k_finite);
+  auto* k = c->add_option("--K", f.K, "Couplings, comma separated")
+               ->delimiter(',')
+               ->check(k_non_negative);
   auto* kr = c->add_option("--K-over-Kc", f.K_over_Kc,
                            "Couplings as multiples of K_c = 2 sigma0^2 N / lambda")
-                 ->delimiter(',');
+                 ->delimiter(',')
+                 ->check(k_non_negative);
   auto* ks = c->add_option("--K-sweep", f.sweep, "START:STOP:STEP (the paper's sweep)");
   k->excludes(kr)->excludes(ks);
   kr->excludes(ks);
@@ -245,7 +248,7 @@ void add_simulate_command(CLI::App& app) {
   c->add_option("--T", f.T, "Time per K, T2 (default 1000)")->check(k_positive);
   c->add_option("--transient", f.transient, "Discarded start of each K, T1 (default 500)")
       ->check(k_non_negative);
-  c->add_option("--seed", f.seed, "Random seed of the initial state")->required();
+  c->add_option("--seed", f.seed, "Random seed of the initial state")->required()->check(k_seed);
   c->add_option("--replicas", f.replicas, "Independent replicas (seeds seed..seed+B-1)")
       ->check(CLI::Range(1, 64));
   c->add_option("--threads", f.threads,

@@ -62,7 +62,7 @@ void add_spectrum_command(CLI::App& app) {
   c->add_option("--sigma0", f.sigma0, "Momentum spread: also report K_c = 2 sigma0^2 N / lambda")
       ->check(k_positive);
   c->add_option("--tolerance", f.tolerance, "Relative eigen-residual tolerance")
-      ->check(CLI::Range(1e-15, 1e-2));
+      ->check(closed_range(1e-15, 1e-2));
   f.read.add_to(c);
   c->callback([] { run(f); });
 }

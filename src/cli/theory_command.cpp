@@ -164,7 +164,7 @@ void add_theory_command(CLI::App& app) {
   k->excludes(kappa);
   c->add_flag("--json", f.json, "One JSON object on stdout");
   c->add_option("--tolerance", f.tolerance, "Relative residual of the self-consistent solves")
-      ->check(CLI::Range(1e-14, 1e-2));
+      ->check(closed_range(1e-14, 1e-2));
   f.read.add_to(c);
   c->callback([] {
     if (f.K.empty() && f.K_over_Kc.empty()) {
