@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The fuzzing job: libFuzzer + AddressSanitizer + UndefinedBehaviorSanitizer on the network readers
-# (tests/fuzz). Builds hmfnet_core and the harnesses with clang in build-fuzz/ (HMFNET_FUZZ=ON: no
+# and the CLI grammar (tests/fuzz; "readers" below includes cli_arguments). Builds hmfnet_core and the harnesses with clang in build-fuzz/ (HMFNET_FUZZ=ON: no
 # Trilinos), replays the kept crashes, then fuzzes each reader for FUZZ_SECONDS (default 60) on a
 # copy of its seed corpus, so the corpus in git only changes by hand. A crash, leak, timeout or
 # out-of-memory in hmfnet's code is copied to tests/fuzz/crashes/<reader>/ (replayed by the
@@ -15,7 +15,7 @@ cd "$root"
 seconds="${FUZZ_SECONDS:-60}"
 # A fixed seed makes a CI run repeat the same exploration (FUZZ_SEED=0: libFuzzer picks one).
 seed="${FUZZ_SEED:-1}"
-readers=(${FUZZ_READERS:-matrix_market edge_list network_hdf5})
+readers=(${FUZZ_READERS:-matrix_market edge_list network_hdf5 cli_arguments})
 
 # clang, its runtimes (libFuzzer, sanitizers) and libomp, only when missing (ci/install-deps.sh
 # installs everything else the library needs).

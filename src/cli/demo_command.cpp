@@ -7,27 +7,23 @@
 #include <iomanip>
 #include <iostream>
 
+#include "cli/command_options.hpp"
 #include "cli/commands.hpp"
 #include "cli/validators.hpp"
 #include "dynamics/network_force.hpp"
 #include "dynamics/simulation.hpp"
-#include "theory/critical_coupling.hpp"
-#include "theory/onset_amplitude.hpp"
-#include "theory/self_consistent.hpp"
 #include "network/chung_lu.hpp"
 #include "network/degree_statistics.hpp"
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
 #include "spectral/network_summary.hpp"
+#include "theory/critical_coupling.hpp"
+#include "theory/onset_amplitude.hpp"
+#include "theory/self_consistent.hpp"
 
 namespace hmfnet::cli {
 
 namespace {
-
-struct DemoFlags {
-  int n = 10000;
-  std::uint64_t seed = 1;
-};
 
 // Table I (ER, N = 10^4): mean degree -> lambda as printed in the paper.
 constexpr double k_table1[5][2] = {{100, 101}, {50, 51.1}, {30, 31.1}, {20, 20.1}, {10, 11.1}};
@@ -88,8 +84,8 @@ void run(const DemoFlags& f) {
     if (root) {
       out() << std::fixed << std::setprecision(3) << std::setw(6) << row[0] << std::setw(12)
             << row[1] << std::setw(14) << s.lambda << std::setw(9)
-            << 100.0 * (s.lambda - row[1]) / row[1] << std::setw(9) << s.G << std::setw(12)
-            << s.Kc << "\n";
+            << 100.0 * (s.lambda - row[1]) / row[1] << std::setw(9) << s.G << std::setw(12) << s.Kc
+            << "\n";
     }
   }
   if (root) {
@@ -104,10 +100,9 @@ void run(const DemoFlags& f) {
         chung_lu(power_law_targets(f.n, law, f.seed), LinkProbability::capped, f.seed);
     const NetworkSummary s = analyse(net);
     if (root) {
-      out() << std::fixed << std::setprecision(2) << std::setw(7) << row[0] << std::setw(7)
-            << d_min << std::setw(12) << row[1] << std::setw(14) << s.lambda << std::setw(12)
-            << row[2] << std::setw(11) << s.rho << std::setw(9) << std::setprecision(3) << s.G
-            << "\n";
+      out() << std::fixed << std::setprecision(2) << std::setw(7) << row[0] << std::setw(7) << d_min
+            << std::setw(12) << row[1] << std::setw(14) << s.lambda << std::setw(12) << row[2]
+            << std::setw(11) << s.rho << std::setw(9) << std::setprecision(3) << s.G << "\n";
     }
   }
   if (root) {
@@ -122,10 +117,7 @@ void run(const DemoFlags& f) {
 
 void add_demo_command(CLI::App& app) {
   static DemoFlags f;
-  auto* c = app.add_subcommand("demo", "Built-in default job: the paper's Tables I-II networks");
-  c->add_option("--n", f.n, "Nodes per network")->check(CLI::Range(100, 1000000));
-  c->add_option("--seed", f.seed, "Random seed")->check(k_seed);
-  c->callback([] { run(f); });
+  add_demo_options(app, f, [] { run(f); });
 }
 
 }  // namespace hmfnet::cli

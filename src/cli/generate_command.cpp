@@ -5,6 +5,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "cli/command_options.hpp"
 #include "cli/commands.hpp"
 #include "cli/provenance.hpp"
 #include "cli/validators.hpp"
@@ -16,25 +17,6 @@
 namespace hmfnet::cli {
 
 namespace {
-
-struct ErFlags {
-  int n = 0;
-  double q = -1.0;
-  double mean_degree = -1.0;
-  std::uint64_t seed = 0;
-  std::string output;
-};
-
-struct SfFlags {
-  int n = 0;
-  double alpha = 0.0;
-  double d_min = -1.0;
-  double mean_degree = -1.0;
-  double cutoff = std::numeric_limits<double>::infinity();
-  std::string link = "capped";
-  std::uint64_t seed = 0;
-  std::string output;
-};
 
 void report(const Network& net, const std::string& path, double seconds) {
   if (!is_root()) return;
@@ -84,52 +66,10 @@ void run_sf(const SfFlags& f) {
 }  // namespace
 
 void add_generate_command(CLI::App& app) {
-  auto* gen = app.add_subcommand("generate", "Generate a random network (er | sf)");
-  gen->require_subcommand(1);
-
   static ErFlags er;
-  auto* e = gen->add_subcommand("er", "Erdos-Renyi G(N, q): each pair linked with probability q");
-  e->add_option("--n", er.n, "Number of nodes")->required()->check(CLI::Range(1, 2147483647));
-  auto* q = e->add_option("--q", er.q, "Link probability")->check(k_probability);
-  auto* d =
-      e->add_option("--mean-degree", er.mean_degree, "Mean degree (N-1) q")->check(k_non_negative);
-  q->excludes(d);
-  e->add_option("--seed", er.seed, "Random seed")->required()->check(k_seed);
-  e->add_option("-o,--output", er.output, "Output file (.mtx, .h5 or edge list .txt)")->required();
-  e->callback([q, d] {
-    if (q->count() == 0 && d->count() == 0) {
-      throw CLI::RequiredError("one of --q or --mean-degree");
-    }
-    run_er(er);
-  });
-
   static SfFlags sf;
-  auto* s = gen->add_subcommand(
-      "sf", "Scale-free Chung-Lu network with power-law targets P(d) ~ d^-alpha, d > d_min");
-  s->add_option("--n", sf.n, "Number of nodes")->required()->check(CLI::Range(1, 2147483647));
-  s->add_option("--alpha", sf.alpha, "Power-law exponent (> 2)")
-      ->required()
-      ->check(greater_than(2.0));
-  auto* dm =
-      s->add_option("--dmin", sf.d_min, "Smallest target degree d_min (> 0)")->check(k_positive);
-  auto* md = s->add_option("--mean-degree", sf.mean_degree,
-                           "Target mean degree: d_min solved from the continuum mean")
-                 ->check(k_positive);
-  dm->excludes(md);
-  s->add_option("--cutoff", sf.cutoff, "Largest target degree (default: none)")
-      ->check(k_positive_or_inf);
-  s->add_option("--link", sf.link,
-                "Link probability of x = w_n w_m / S: capped min(1,x) "
-                "(default), poisson 1-exp(-x), odds x/(1+x)")
-      ->check(CLI::IsMember({"capped", "poisson", "odds"}));
-  s->add_option("--seed", sf.seed, "Random seed")->required()->check(k_seed);
-  s->add_option("-o,--output", sf.output, "Output file (.mtx, .h5 or edge list .txt)")->required();
-  s->callback([dm, md] {
-    if (dm->count() == 0 && md->count() == 0) {
-      throw CLI::RequiredError("one of --dmin or --mean-degree");
-    }
-    run_sf(sf);
-  });
+  add_generate_options(
+      app, er, sf, [] { run_er(er); }, [] { run_sf(sf); });
 }
 
 }  // namespace hmfnet::cli

@@ -2,10 +2,10 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "cli/command_options.hpp"
 #include "cli/commands.hpp"
 #include "core/error.hpp"
 #include "dynamics/interrupt.hpp"
-#include "hmfnet/version.hpp"
 #include "parallel/parallel_session.hpp"
 
 namespace hmfnet::cli {
@@ -32,13 +32,7 @@ namespace {
 
 int run(int argc, char** argv) {
   CLI::App app{"hmfnet: the Hamiltonian Mean Field model of coupled rotors on networks"};
-  app.set_version_flag("--version", std::string(hmfnet::k_version) + " (" +
-                                        hmfnet::k_git_commit + ")");
-  app.require_subcommand(1);
-  // One line, like every other error: "hmfnet: error: CAUSE (see --help)".
-  app.failure_message([](const CLI::App*, const CLI::Error& e) {
-    return "hmfnet: error: " + std::string(e.what()) + " (see --help)\n";
-  });
+  hmfnet::cli::configure_app(app);
   hmfnet::cli::add_generate_command(app);
   hmfnet::cli::add_rewire_command(app);
   hmfnet::cli::add_spectrum_command(app);

@@ -1,10 +1,11 @@
 // `hmfnet rewire`: degree-preserving rewiring to a target rho (Fig. PLcorr).
 #include <iostream>
 
+#include "cli/command_options.hpp"
 #include "cli/commands.hpp"
-#include "cli/validators.hpp"
 #include "cli/provenance.hpp"
 #include "cli/read_flags.hpp"
+#include "cli/validators.hpp"
 #include "core/atomic_file.hpp"
 #include "io/network_file.hpp"
 #include "network/rewiring.hpp"
@@ -12,15 +13,6 @@
 namespace hmfnet::cli {
 
 namespace {
-
-struct RewireFlags {
-  std::string input;
-  double target_rho = 0.0;
-  std::uint64_t seed = 0;
-  std::int64_t max_attempts = 0;
-  std::string output;
-  ReadFlags read;
-};
 
 void run(const RewireFlags& f) {
   format_from_extension(f.output);
@@ -44,18 +36,7 @@ void run(const RewireFlags& f) {
 
 void add_rewire_command(CLI::App& app) {
   static RewireFlags f;
-  auto* c = app.add_subcommand(
-      "rewire", "Degree-preserving double-edge swaps until rho (eq:rhodef) reaches a target");
-  c->add_option("input", f.input, "Network file (.mtx, .h5, edge list)")->required();
-  c->add_option("--target-rho", f.target_rho, "Target degree correlation rho (> 0)")
-      ->required()
-      ->check(k_positive);
-  c->add_option("--seed", f.seed, "Random seed")->required()->check(k_seed);
-  c->add_option("--max-attempts", f.max_attempts, "Swap attempts before giving up (0: 200 x edges)")
-      ->check(k_non_negative);
-  c->add_option("-o,--output", f.output, "Output file")->required();
-  f.read.add_to(c);
-  c->callback([] { run(f); });
+  add_rewire_options(app, f, [] { run(f); });
 }
 
 }  // namespace hmfnet::cli

@@ -4,17 +4,18 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
-#include <cmath>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "cli/command_options.hpp"
 #include "cli/commands.hpp"
-#include "cli/validators.hpp"
 #include "cli/provenance.hpp"
 #include "cli/read_flags.hpp"
+#include "cli/validators.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "dynamics/integrator.hpp"
@@ -31,25 +32,6 @@
 namespace hmfnet::cli {
 
 namespace {
-
-struct SimulateFlags {
-  std::string input;
-  double sigma0 = 0.35;
-  double omega = 6.0;
-  std::vector<double> K, K_over_Kc;
-  std::string sweep;
-  double h = 0.01, T = 1000.0, transient = 500.0;
-  std::uint64_t seed = 0;
-  int replicas = 1;
-  int threads = 0;
-  std::string output, checkpoint, force = "auto", integrator = "leapfrog";
-  bool resume = false, json = false, quiet = false, node_data = false, restart_each_K = false;
-  int record_stride = 100;
-  double energy_tolerance = 1e-2;
-  int rotor_node = 0;
-  int phase_bins = 72;
-  ReadFlags read;
-};
 
 // "START:STOP:STEP" -> START, START+STEP, ... <= STOP (+ half a step of slack for round-off).
 std::vector<double> parse_sweep(const std::string& text) {
@@ -161,10 +143,10 @@ void run(const SimulateFlags& f) {
   const SimulationResult result = simulate(distributed, net.degrees(), *force, params);
   if (result.interrupted) {
     const int signal = interrupt_signal();
-    throw RunInterrupted(signal, std::string(signal == SIGINT ? "SIGINT" : "SIGTERM") +
-                                     " after " + std::to_string(result.steps) + " steps; " +
-                                     (f.checkpoint.empty()
-                                          ? "no results written (add --checkpoint F to make runs "
+    throw RunInterrupted(
+        signal, std::string(signal == SIGINT ? "SIGINT" : "SIGTERM") + " after " +
+                    std::to_string(result.steps) + " steps; " +
+                    (f.checkpoint.empty() ? "no results written (add --checkpoint F to make runs "
                                             "resumable)"
                                           : "checkpoint " + f.checkpoint +
                                                 " written: rerun with --resume to continue"));
@@ -180,24 +162,30 @@ void run(const SimulateFlags& f) {
   out["steps"] = result.steps;
   out["integration_seconds"] = result.integration_seconds;
   // Aggregate over replicas: each step reads every stored entry once per replica's sum.
-  out["nnz_steps_per_second"] = static_cast<double>(result.nnz_per_evaluation) *
-                                static_cast<double>(result.steps) *
-                                static_cast<double>(params.replicas.size()) /
-                                result.integration_seconds;
+  out["nnz_steps_per_second"] =
+      static_cast<double>(result.nnz_per_evaluation) * static_cast<double>(result.steps) *
+      static_cast<double>(params.replicas.size()) / result.integration_seconds;
   out["resumed"] = result.resumed;
   for (const auto& p : result.points) out["points"].push_back(point_json(p, Kc));
   if (!f.output.empty()) {
-    nlohmann::json provenance_params = {
-        {"input", f.input},   {"sigma0", f.sigma0},     {"omega", f.omega},
-        {"seed", f.seed},     {"replicas", f.replicas}, {"h", f.h},
-        {"T", f.T},           {"transient", f.transient}, {"K", params.K},
-        {"continue_state", params.continue_state}};
+    nlohmann::json provenance_params = {{"input", f.input},
+                                        {"sigma0", f.sigma0},
+                                        {"omega", f.omega},
+                                        {"seed", f.seed},
+                                        {"replicas", f.replicas},
+                                        {"h", f.h},
+                                        {"T", f.T},
+                                        {"transient", f.transient},
+                                        {"K", params.K},
+                                        {"continue_state", params.continue_state}};
     RunMetadata meta;
     meta.parameters_json = provenance_params.dump();
-    meta.network_json = nlohmann::json{{"n", net.size()},     {"nnz", net.nnz()},
-                                       {"edges", net.edges()}, {"lambda", perron.lambda},
-                                       {"Kc", Kc}}
-                            .dump();
+    meta.network_json = nlohmann::json{
+        {"n", net.size()},
+        {"nnz", net.nnz()},
+        {"edges", net.edges()},
+        {"lambda", perron.lambda},
+        {"Kc", Kc}}.dump();
     nlohmann::json prov = nlohmann::json::parse(provenance("simulate", provenance_params));
     prov["ranks"] = ParallelSession::ranks();
     prov["threads"] = omp_get_max_threads();
@@ -227,64 +215,7 @@ void run(const SimulateFlags& f) {
 
 void add_simulate_command(CLI::App& app) {
   static SimulateFlags f;
-  auto* c = app.add_subcommand("simulate",
-                               "Integrate the HMF rotors on a network over a schedule of K "
-                               "(the paper's protocol: each K continues from the current state)");
-  c->add_option("input", f.input, "Network file (.mtx, .h5, edge list)")->required();
-  c->add_option("--sigma0", f.sigma0, "Std of the initial Gaussian momenta (default 0.35)")
-      ->check(k_positive);
-  c->add_option("--omega", f.omega, "Mean of the initial momenta (default 6)")->check(k_finite);
-  auto* k = c->add_option("--K", f.K, "Couplings, comma separated")
-               ->delimiter(',')
-               ->check(k_non_negative);
-  auto* kr = c->add_option("--K-over-Kc", f.K_over_Kc,
-                           "Couplings as multiples of K_c = 2 sigma0^2 N / lambda")
-                 ->delimiter(',')
-                 ->check(k_non_negative);
-  auto* ks = c->add_option("--K-sweep", f.sweep, "START:STOP:STEP (the paper's sweep)");
-  k->excludes(kr)->excludes(ks);
-  kr->excludes(ks);
-  c->add_option("--h", f.h, "Time step (default 0.01)")->check(k_positive);
-  c->add_option("--T", f.T, "Time per K, T2 (default 1000)")->check(k_positive);
-  c->add_option("--transient", f.transient, "Discarded start of each K, T1 (default 500)")
-      ->check(k_non_negative);
-  c->add_option("--seed", f.seed, "Random seed of the initial state")->required()->check(k_seed);
-  c->add_option("--replicas", f.replicas, "Independent replicas (seeds seed..seed+B-1)")
-      ->check(CLI::Range(1, 64));
-  c->add_option("--threads", f.threads,
-                "OpenMP threads per rank (default: all cores, shared by the ranks)")
-      ->check(CLI::Range(1, 1024));
-  c->add_option("-o,--output", f.output, "Results file (HDF5)");
-  c->add_option("--checkpoint", f.checkpoint, "Checkpoint file, written every few seconds");
-  c->add_flag("--resume", f.resume, "Continue from --checkpoint if it exists");
-  c->add_flag("--json", f.json, "One JSON object on stdout");
-  c->add_flag("--quiet", f.quiet, "No progress line");
-  c->add_flag("--node-data", f.node_data,
-              "Per node and K: <R_n>_t, Omega_n, r_n, the fluctuation terms, the psi_n - psi_1 "
-              "histogram and one rotor's (theta_bar, p_bar) samples (docs/simulation_output.md)");
-  c->add_option("--rotor-node", f.rotor_node, "--node-data: the rotor sampled (default 0)")
-      ->check(k_non_negative);
-  c->add_option("--phase-bins", f.phase_bins, "--node-data: histogram bins (default 72)")
-      ->check(CLI::Range(1, 100000));
-  c->add_flag("--restart-each-K", f.restart_each_K, "Each K starts from the initial state");
-  c->add_option("--record-stride", f.record_stride, "Steps between time-series records")
-      ->check(CLI::Range(1, 1000000000));
-  c->add_option("--energy-tolerance", f.energy_tolerance,
-                "Stop when the relative energy error exceeds this (default 1e-2)")
-      ->check(k_positive);
-  c->add_option("--integrator", f.integrator,
-                "leapfrog (default; the paper's), yoshida4, blanes_moan (4th-order symplectic), "
-                "rk4 (non-symplectic contrast)");
-  c->add_option("--force", f.force, "auto (rank-one fast path when A = a a^T), sparse, rank-one")
-      ->check(CLI::IsMember({"auto", "sparse", "rank-one"}));
-  f.read.add_to(c);
-  c->callback([] {
-    if (f.K.empty() && f.K_over_Kc.empty() && f.sweep.empty()) {
-      throw CLI::RequiredError("one of --K, --K-over-Kc or --K-sweep");
-    }
-    if (f.resume && f.checkpoint.empty()) throw CLI::RequiredError("--checkpoint with --resume");
-    run(f);
-  });
+  add_simulate_options(app, f, [] { run(f); });
 }
 
 }  // namespace hmfnet::cli

@@ -2,23 +2,16 @@
 #include <iomanip>
 #include <iostream>
 
+#include "cli/command_options.hpp"
 #include "cli/commands.hpp"
-#include "cli/validators.hpp"
 #include "cli/read_flags.hpp"
+#include "cli/validators.hpp"
 #include "parallel/distributed_network.hpp"
 #include "spectral/network_summary.hpp"
 
 namespace hmfnet::cli {
 
 namespace {
-
-struct SpectrumFlags {
-  std::string input;
-  bool json = false;
-  double sigma0 = 0.0;
-  double tolerance = 1e-10;
-  ReadFlags read;
-};
 
 void print_text(const NetworkSummary& s) {
   std::cout << std::setprecision(8) << "nodes              " << s.n << "\n"
@@ -29,8 +22,7 @@ void print_text(const NetworkSummary& s) {
             << s.eigen_iterations << " iterations, " << s.eigen_seconds << " s)\n"
             << "rho                " << s.rho << "\n"
             << "G                  " << s.G << "\n"
-            << "components         " << s.components << " (largest " << s.largest_component
-            << ")\n"
+            << "components         " << s.components << " (largest " << s.largest_component << ")\n"
             << "bipartite          " << (s.bipartite ? "yes" : "no") << "\n";
   if (s.sigma0 > 0.0) std::cout << "K_c (sigma0 = " << s.sigma0 << ")  " << s.Kc << "\n";
   for (const auto& w : s.warnings) std::cout << "warning: " << w << "\n";
@@ -55,16 +47,7 @@ void run(const SpectrumFlags& f) {
 
 void add_spectrum_command(CLI::App& app) {
   static SpectrumFlags f;
-  auto* c = app.add_subcommand(
-      "spectrum", "Largest eigenvalue (Anasazi, distributed over MPI ranks), rho, G, structure");
-  c->add_option("input", f.input, "Network file (.mtx, .h5, edge list)")->required();
-  c->add_flag("--json", f.json, "One JSON object on stdout");
-  c->add_option("--sigma0", f.sigma0, "Momentum spread: also report K_c = 2 sigma0^2 N / lambda")
-      ->check(k_positive);
-  c->add_option("--tolerance", f.tolerance, "Relative eigen-residual tolerance")
-      ->check(closed_range(1e-15, 1e-2));
-  f.read.add_to(c);
-  c->callback([] { run(f); });
+  add_spectrum_options(app, f, [] { run(f); });
 }
 
 }  // namespace hmfnet::cli

@@ -9,9 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "cli/command_options.hpp"
 #include "cli/commands.hpp"
-#include "cli/validators.hpp"
 #include "cli/read_flags.hpp"
+#include "cli/validators.hpp"
 #include "core/error.hpp"
 #include "network/degree_statistics.hpp"
 #include "parallel/distributed_network.hpp"
@@ -25,16 +26,6 @@
 namespace hmfnet::cli {
 
 namespace {
-
-struct TheoryFlags {
-  std::string input;
-  double sigma0 = 0.0;
-  std::vector<double> K;
-  std::vector<double> K_over_Kc;
-  bool json = false;
-  double tolerance = 1e-10;
-  ReadFlags read;
-};
 
 struct TheoryReport {
   double lambda = 0.0;
@@ -149,29 +140,7 @@ void run(const TheoryFlags& f) {
 
 void add_theory_command(CLI::App& app) {
   static TheoryFlags f;
-  auto* c = app.add_subcommand(
-      "theory", "K_c, G, growth rate, synchronized state R(K) and its K -> infinity limit");
-  c->add_option("input", f.input, "Network file (.mtx, .h5, edge list)")->required();
-  c->add_option("--sigma0", f.sigma0, "Standard deviation of the initial momenta")
-      ->required()
-      ->check(k_positive);
-  auto* k = c->add_option("--K", f.K, "Couplings K (comma-separated list)")
-                ->delimiter(',')
-                ->check(k_positive);
-  auto* kappa = c->add_option("--K-over-Kc", f.K_over_Kc, "Couplings as K/K_c (comma-separated)")
-                    ->delimiter(',')
-                    ->check(k_positive);
-  k->excludes(kappa);
-  c->add_flag("--json", f.json, "One JSON object on stdout");
-  c->add_option("--tolerance", f.tolerance, "Relative residual of the self-consistent solves")
-      ->check(closed_range(1e-14, 1e-2));
-  f.read.add_to(c);
-  c->callback([] {
-    if (f.K.empty() && f.K_over_Kc.empty()) {
-      throw ParameterError("--K / --K-over-Kc", "neither given", "one of them, a list of values");
-    }
-    run(f);
-  });
+  add_theory_options(app, f, [] { run(f); });
 }
 
 }  // namespace hmfnet::cli

@@ -1,6 +1,6 @@
-// Replays the fuzz seed corpus and every kept crashing input through the network readers in the
-// ordinary build (CTest unit.fuzz_replay), so a crash the fuzzer once found stays fixed without
-// clang or libFuzzer.
+// Replays the fuzz seed corpus and every kept crashing input through the network readers and the
+// CLI grammar (cli_arguments/, cli_target.hpp) in the ordinary build (CTest unit.fuzz_replay), so a
+// crash the fuzzer once found stays fixed without clang or libFuzzer.
 //
 // Usage: hmfnet_fuzz_replay ROOT...   where each ROOT holds one folder per reader
 //        (matrix_market/, edge_list/, network_hdf5/; tests/fuzz/corpus and tests/fuzz/crashes).
@@ -9,8 +9,12 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
 #include <vector>
 
+#include "cli_target.hpp"
 #include "reader_targets.hpp"
 
 namespace {
@@ -51,6 +55,22 @@ int main(int argc, char** argv) {
                     accepted > 0 ? "accepted" : "refused");
         ++replayed;
       }
+    }
+  }
+  int reached = 0;
+  for (int a = 1; a < argc; ++a) {
+    const std::filesystem::path dir = std::filesystem::path(argv[a]) / "cli_arguments";
+    if (!std::filesystem::is_directory(dir)) continue;
+    for (const auto& file : files_in(dir)) {
+      std::ifstream in(file, std::ios::binary);
+      const std::string bytes((std::istreambuf_iterator<char>(in)),
+                              std::istreambuf_iterator<char>());
+      const bool ok = hmfnet::fuzz::parse_command_line(hmfnet::fuzz::split_arguments(
+          reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()));
+      std::printf("%-14s %-60s %s\n", "cli_arguments", file.c_str(),
+                  ok ? "reached work" : "refused");
+      reached += ok ? 1 : 0;
+      ++replayed;
     }
   }
   // An empty corpus would make this test pass while checking nothing.

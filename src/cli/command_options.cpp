@@ -1,0 +1,198 @@
+#include "cli/command_options.hpp"
+
+#include "cli/validators.hpp"
+#include "core/error.hpp"
+#include "hmfnet/version.hpp"
+
+namespace hmfnet::cli {
+
+void configure_app(CLI::App& app) {
+  app.set_version_flag("--version", std::string(k_version) + " (" + k_git_commit + ")");
+  app.require_subcommand(1);
+  // One line, like every other error: "hmfnet: error: CAUSE (see --help)".
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return "hmfnet: error: " + std::string(e.what()) + " (see --help)\n";
+  });
+}
+
+void ReadFlags::add_to(CLI::App* command) {
+  command->add_flag("--symmetrize", symmetrize,
+                    "Matrix Market 'general' input that is not symmetric: use (A+A^T)/2 "
+                    "(with a warning) instead of rejecting it");
+  command->add_option("--index-base", index_base, "Edge lists: first node index (0 or 1)")
+      ->check(CLI::IsMember({0, 1}));
+  command->add_option("--nodes", nodes, "Edge lists: number of nodes (default: largest index+1)")
+      ->check(k_non_negative);
+}
+
+void add_generate_options(CLI::App& app, ErFlags& er, SfFlags& sf, const Run& run_er,
+                          const Run& run_sf) {
+  auto* gen = app.add_subcommand("generate", "Generate a random network (er | sf)");
+  gen->require_subcommand(1);
+
+  auto* e = gen->add_subcommand("er", "Erdos-Renyi G(N, q): each pair linked with probability q");
+  e->add_option("--n", er.n, "Number of nodes")->required()->check(CLI::Range(1, 2147483647));
+  auto* q = e->add_option("--q", er.q, "Link probability")->check(k_probability);
+  auto* d =
+      e->add_option("--mean-degree", er.mean_degree, "Mean degree (N-1) q")->check(k_non_negative);
+  q->excludes(d);
+  e->add_option("--seed", er.seed, "Random seed")->required()->check(k_seed);
+  e->add_option("-o,--output", er.output, "Output file (.mtx, .h5 or edge list .txt)")->required();
+  e->callback([q, d, run_er] {
+    if (q->count() == 0 && d->count() == 0) {
+      throw CLI::RequiredError("one of --q or --mean-degree");
+    }
+    run_er();
+  });
+
+  auto* s = gen->add_subcommand(
+      "sf", "Scale-free Chung-Lu network with power-law targets P(d) ~ d^-alpha, d > d_min");
+  s->add_option("--n", sf.n, "Number of nodes")->required()->check(CLI::Range(1, 2147483647));
+  s->add_option("--alpha", sf.alpha, "Power-law exponent (> 2)")
+      ->required()
+      ->check(greater_than(2.0));
+  auto* dm =
+      s->add_option("--dmin", sf.d_min, "Smallest target degree d_min (> 0)")->check(k_positive);
+  auto* md = s->add_option("--mean-degree", sf.mean_degree,
+                           "Target mean degree: d_min solved from the continuum mean")
+                 ->check(k_positive);
+  dm->excludes(md);
+  s->add_option("--cutoff", sf.cutoff, "Largest target degree (default: none)")
+      ->check(k_positive_or_inf);
+  s->add_option("--link", sf.link,
+                "Link probability of x = w_n w_m / S: capped min(1,x) "
+                "(default), poisson 1-exp(-x), odds x/(1+x)")
+      ->check(CLI::IsMember({"capped", "poisson", "odds"}));
+  s->add_option("--seed", sf.seed, "Random seed")->required()->check(k_seed);
+  s->add_option("-o,--output", sf.output, "Output file (.mtx, .h5 or edge list .txt)")->required();
+  s->callback([dm, md, run_sf] {
+    if (dm->count() == 0 && md->count() == 0) {
+      throw CLI::RequiredError("one of --dmin or --mean-degree");
+    }
+    run_sf();
+  });
+}
+
+void add_rewire_options(CLI::App& app, RewireFlags& f, const Run& run) {
+  auto* c = app.add_subcommand(
+      "rewire", "Degree-preserving double-edge swaps until rho (eq:rhodef) reaches a target");
+  c->add_option("input", f.input, "Network file (.mtx, .h5, edge list)")->required();
+  c->add_option("--target-rho", f.target_rho, "Target degree correlation rho (> 0)")
+      ->required()
+      ->check(k_positive);
+  c->add_option("--seed", f.seed, "Random seed")->required()->check(k_seed);
+  c->add_option("--max-attempts", f.max_attempts, "Swap attempts before giving up (0: 200 x edges)")
+      ->check(k_non_negative);
+  c->add_option("-o,--output", f.output, "Output file")->required();
+  f.read.add_to(c);
+  c->callback(run);
+}
+
+void add_spectrum_options(CLI::App& app, SpectrumFlags& f, const Run& run) {
+  auto* c = app.add_subcommand(
+      "spectrum", "Largest eigenvalue (Anasazi, distributed over MPI ranks), rho, G, structure");
+  c->add_option("input", f.input, "Network file (.mtx, .h5, edge list)")->required();
+  c->add_flag("--json", f.json, "One JSON object on stdout");
+  c->add_option("--sigma0", f.sigma0, "Momentum spread: also report K_c = 2 sigma0^2 N / lambda")
+      ->check(k_positive);
+  c->add_option("--tolerance", f.tolerance, "Relative eigen-residual tolerance")
+      ->check(closed_range(1e-15, 1e-2));
+  f.read.add_to(c);
+  c->callback(run);
+}
+
+void add_theory_options(CLI::App& app, TheoryFlags& f, const Run& run) {
+  auto* c = app.add_subcommand(
+      "theory", "K_c, G, growth rate, synchronized state R(K) and its K -> infinity limit");
+  c->add_option("input", f.input, "Network file (.mtx, .h5, edge list)")->required();
+  c->add_option("--sigma0", f.sigma0, "Standard deviation of the initial momenta")
+      ->required()
+      ->check(k_positive);
+  auto* k = c->add_option("--K", f.K, "Couplings K (comma-separated list)")
+                ->delimiter(',')
+                ->check(k_positive);
+  auto* kappa = c->add_option("--K-over-Kc", f.K_over_Kc, "Couplings as K/K_c (comma-separated)")
+                    ->delimiter(',')
+                    ->check(k_positive);
+  k->excludes(kappa);
+  c->add_flag("--json", f.json, "One JSON object on stdout");
+  c->add_option("--tolerance", f.tolerance, "Relative residual of the self-consistent solves")
+      ->check(closed_range(1e-14, 1e-2));
+  f.read.add_to(c);
+  c->callback([&f, run] {
+    if (f.K.empty() && f.K_over_Kc.empty()) {
+      throw ParameterError("--K / --K-over-Kc", "neither given", "one of them, a list of values");
+    }
+    run();
+  });
+}
+
+void add_simulate_options(CLI::App& app, SimulateFlags& f, const Run& run) {
+  auto* c = app.add_subcommand("simulate",
+                               "Integrate the HMF rotors on a network over a schedule of K "
+                               "(the paper's protocol: each K continues from the current state)");
+  c->add_option("input", f.input, "Network file (.mtx, .h5, edge list)")->required();
+  c->add_option("--sigma0", f.sigma0, "Std of the initial Gaussian momenta (default 0.35)")
+      ->check(k_positive);
+  c->add_option("--omega", f.omega, "Mean of the initial momenta (default 6)")->check(k_finite);
+  auto* k = c->add_option("--K", f.K, "Couplings, comma separated")
+                ->delimiter(',')
+                ->check(k_non_negative);
+  auto* kr = c->add_option("--K-over-Kc", f.K_over_Kc,
+                           "Couplings as multiples of K_c = 2 sigma0^2 N / lambda")
+                 ->delimiter(',')
+                 ->check(k_non_negative);
+  auto* ks = c->add_option("--K-sweep", f.sweep, "START:STOP:STEP (the paper's sweep)");
+  k->excludes(kr)->excludes(ks);
+  kr->excludes(ks);
+  c->add_option("--h", f.h, "Time step (default 0.01)")->check(k_positive);
+  c->add_option("--T", f.T, "Time per K, T2 (default 1000)")->check(k_positive);
+  c->add_option("--transient", f.transient, "Discarded start of each K, T1 (default 500)")
+      ->check(k_non_negative);
+  c->add_option("--seed", f.seed, "Random seed of the initial state")->required()->check(k_seed);
+  c->add_option("--replicas", f.replicas, "Independent replicas (seeds seed..seed+B-1)")
+      ->check(CLI::Range(1, 64));
+  c->add_option("--threads", f.threads,
+                "OpenMP threads per rank (default: all cores, shared by the ranks)")
+      ->check(CLI::Range(1, 1024));
+  c->add_option("-o,--output", f.output, "Results file (HDF5)");
+  c->add_option("--checkpoint", f.checkpoint, "Checkpoint file, written every few seconds");
+  c->add_flag("--resume", f.resume, "Continue from --checkpoint if it exists");
+  c->add_flag("--json", f.json, "One JSON object on stdout");
+  c->add_flag("--quiet", f.quiet, "No progress line");
+  c->add_flag("--node-data", f.node_data,
+              "Per node and K: <R_n>_t, Omega_n, r_n, the fluctuation terms, the psi_n - psi_1 "
+              "histogram and one rotor's (theta_bar, p_bar) samples (docs/simulation_output.md)");
+  c->add_option("--rotor-node", f.rotor_node, "--node-data: the rotor sampled (default 0)")
+      ->check(k_non_negative);
+  c->add_option("--phase-bins", f.phase_bins, "--node-data: histogram bins (default 72)")
+      ->check(CLI::Range(1, 100000));
+  c->add_flag("--restart-each-K", f.restart_each_K, "Each K starts from the initial state");
+  c->add_option("--record-stride", f.record_stride, "Steps between time-series records")
+      ->check(CLI::Range(1, 1000000000));
+  c->add_option("--energy-tolerance", f.energy_tolerance,
+                "Stop when the relative energy error exceeds this (default 1e-2)")
+      ->check(k_positive);
+  c->add_option("--integrator", f.integrator,
+                "leapfrog (default; the paper's), yoshida4, blanes_moan (4th-order symplectic), "
+                "rk4 (non-symplectic contrast)");
+  c->add_option("--force", f.force, "auto (rank-one fast path when A = a a^T), sparse, rank-one")
+      ->check(CLI::IsMember({"auto", "sparse", "rank-one"}));
+  f.read.add_to(c);
+  c->callback([&f, run] {
+    if (f.K.empty() && f.K_over_Kc.empty() && f.sweep.empty()) {
+      throw CLI::RequiredError("one of --K, --K-over-Kc or --K-sweep");
+    }
+    if (f.resume && f.checkpoint.empty()) throw CLI::RequiredError("--checkpoint with --resume");
+    run();
+  });
+}
+
+void add_demo_options(CLI::App& app, DemoFlags& f, const Run& run) {
+  auto* c = app.add_subcommand("demo", "Built-in default job: the paper's Tables I-II networks");
+  c->add_option("--n", f.n, "Nodes per network")->check(CLI::Range(100, 1000000));
+  c->add_option("--seed", f.seed, "Random seed")->check(k_seed);
+  c->callback(run);
+}
+
+}  // namespace hmfnet::cli

@@ -1,0 +1,101 @@
+#pragma once
+// The command-line grammar of `hmfnet`: every subcommand's options, their ranges and the checks
+// that involve several options, with no work attached. Each add_*_options registers a subcommand
+// whose callback, once its options parse, calls `run` with the flags filled in. The commands
+// (cli/*_command.cpp) pass their work; the CLI argument fuzzer (tests/fuzz/fuzz_cli_arguments)
+// passes nothing, so the grammar is tested without MPI, Trilinos or a network.
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "cli/read_flags.hpp"
+
+namespace hmfnet::cli {
+
+using Run = std::function<void()>;
+
+struct ErFlags {
+  int n = 0;
+  double q = -1.0;
+  double mean_degree = -1.0;
+  std::uint64_t seed = 0;
+  std::string output;
+};
+
+struct SfFlags {
+  int n = 0;
+  double alpha = 0.0;
+  double d_min = -1.0;
+  double mean_degree = -1.0;
+  double cutoff = std::numeric_limits<double>::infinity();
+  std::string link = "capped";
+  std::uint64_t seed = 0;
+  std::string output;
+};
+
+struct RewireFlags {
+  std::string input;
+  double target_rho = 0.0;
+  std::uint64_t seed = 0;
+  std::int64_t max_attempts = 0;
+  std::string output;
+  ReadFlags read;
+};
+
+struct SpectrumFlags {
+  std::string input;
+  bool json = false;
+  double sigma0 = 0.0;
+  double tolerance = 1e-10;
+  ReadFlags read;
+};
+
+struct TheoryFlags {
+  std::string input;
+  double sigma0 = 0.0;
+  std::vector<double> K;
+  std::vector<double> K_over_Kc;
+  bool json = false;
+  double tolerance = 1e-10;
+  ReadFlags read;
+};
+
+struct SimulateFlags {
+  std::string input;
+  double sigma0 = 0.35;
+  double omega = 6.0;
+  std::vector<double> K, K_over_Kc;
+  std::string sweep;
+  double h = 0.01, T = 1000.0, transient = 500.0;
+  std::uint64_t seed = 0;
+  int replicas = 1;
+  int threads = 0;
+  std::string output, checkpoint, force = "auto", integrator = "leapfrog";
+  bool resume = false, json = false, quiet = false, node_data = false, restart_each_K = false;
+  int record_stride = 100;
+  double energy_tolerance = 1e-2;
+  int rotor_node = 0;
+  int phase_bins = 72;
+  ReadFlags read;
+};
+
+struct DemoFlags {
+  int n = 10000;
+  std::uint64_t seed = 1;
+};
+
+/// The top-level app: version flag, one subcommand required, one-line errors.
+void configure_app(CLI::App& app);
+
+void add_generate_options(CLI::App& app, ErFlags& er, SfFlags& sf, const Run& run_er,
+                          const Run& run_sf);
+void add_rewire_options(CLI::App& app, RewireFlags& f, const Run& run);
+void add_spectrum_options(CLI::App& app, SpectrumFlags& f, const Run& run);
+void add_theory_options(CLI::App& app, TheoryFlags& f, const Run& run);
+void add_simulate_options(CLI::App& app, SimulateFlags& f, const Run& run);
+void add_demo_options(CLI::App& app, DemoFlags& f, const Run& run);
+
+}  // namespace hmfnet::cli
