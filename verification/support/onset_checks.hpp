@@ -44,7 +44,8 @@ inline OnsetCurve check_onset(ClaimCheck& check, const std::string& name, const 
               c.x_on, c.x_on_err, c.points, c.x_on_theory);
   if (std::isnan(c.x_on) || std::isnan(c.x_on_theory)) {
     check.holds(name + ": onset resolved", false,
-                "fewer than 3 equilibrated grid points with excess in [0.1, 0.35]: " +
+                "fewer than 3 equilibrated grid points with excess in [0.1, 0.35] after the "
+                "refinement of onset_grid.hpp: " +
                     std::to_string(c.points));
     return c;
   }
@@ -106,7 +107,7 @@ inline void check_lines_up(ClaimCheck& check, const std::string& family,
 inline void add_onset_figure_data(ClaimCheck& check, const std::string& prefix,
                                   const std::vector<OnsetCurve>& curves,
                                   const std::string& labels) {
-  const std::size_t rows = curves.size(), cols = curves.front().x.size();
+  const std::size_t rows = curves.size(), cols = grid_columns(curves);
   check.data(prefix + "_K", stack(curves, &OnsetCurve::K), rows, cols);
   check.data(prefix + "_R", stack(curves, &OnsetCurve::R), rows, cols);
   check.data(prefix + "_R_err", stack(curves, &OnsetCurve::R_err), rows, cols);

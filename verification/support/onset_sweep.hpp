@@ -35,10 +35,12 @@
 //   kWindowLow <= E <= kWindowHigh (at least 3): below 0.1 the excess is dominated by the
 //   near-critical enhancement of the floor fluctuations (E ~ 0.07 at x = 0.9 measured, ER
 //   <d> = 100, N = 1000), above 0.35 R^2 bends away from the line (eq:globalOrderRInDeltaK holds
-//   only near K_c). The theory curve (eq:rSigmaBesselMain of the same network, R = 0 below K_c,
-//   no floor) goes through the same fit on the same points with the same weights: x_on(theory)
-//   is where the rule puts the onset of a system that follows the theory exactly, so
-//   x_on - x_on(theory) is free of the rule's curvature bias x_on(theory) - 1.
+//   only near K_c). When the sweep leaves fewer than 3 points in the window, the grid is refined
+//   once by the rule of onset_grid.hpp (midpoints where the window lies between two grid points)
+//   and the refined prefix is swept again from K = 0. The theory curve (eq:rSigmaBesselMain of the
+//   same network, R = 0 below K_c, no floor) goes through the same fit on the same points with the
+//   same weights: x_on(theory) is where the rule puts the onset of a system that follows the theory
+//   exactly, so x_on - x_on(theory) is free of the rule's curvature bias x_on(theory) - 1.
 // Errors: a point's error is the larger of the replica spread sd / sqrt(B) and the batch-means
 //   SEM of the time average / sqrt(B) (both of the mean over its qualifying segments);
 //   dE^2 = 2 R dR. The standard error of x_on follows from the covariance of the fitted line
@@ -46,6 +48,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -54,6 +57,7 @@
 #include "network/network.hpp"
 #include "parallel/distributed_network.hpp"
 #include "spectral/perron.hpp"
+#include "support/onset_grid.hpp"
 #include "support/sample_statistics.hpp"
 #include "theory/growth_rate.hpp"
 #include "theory/self_consistent.hpp"
@@ -62,8 +66,6 @@ namespace hmfnet::verification {
 
 /// c of the equilibration criterion: time at K before a segment's average >= c / gamma(x).
 constexpr double kEquilibrationEfolds = 15.0;
-constexpr double kWindowLow = 0.1;
-constexpr double kWindowHigh = 0.35;
 
 struct SweepProtocol {
   std::vector<double> x;   ///< K / K_c, increasing, x[0] = 0 (the floor R0)
@@ -177,25 +179,21 @@ inline void theory_curve(OnsetCurve& c, const Network& net, const PerronResult& 
   }
 }
 
-/// Steps 1-3 for one network: lambda, the simulated sweep, the theory curve, both onsets.
-inline OnsetCurve measure_onset(const Network& net, double sigma0, const SweepProtocol& protocol) {
-  OnsetCurve c;
-  const DistributedNetwork distributed(net);
-  const PerronResult perron = perron_eigenpair(distributed);
-  c.lambda = perron.lambda;
-  c.sigma0 = sigma0;
-  c.Kc = 2.0 * sigma0 * sigma0 * static_cast<double>(net.size()) / c.lambda;
-  c.x = protocol.x;
-  for (const double x : c.x) c.K.push_back(x * c.Kc);
-  theory_curve(c, net, perron);
+/// One sweep over the grid x (K = x K_c raised from 0, each K continuing the state): appends
+/// the points' x, K, segments, <R>, error and equilibration flag to c (lambda, Kc, sigma0 set)
+/// and adds the simulated time per replica to c.time_units.
+inline void run_sweep(OnsetCurve& c, const DistributedNetwork& distributed, const Network& net,
+                      const std::vector<double>& x, const SweepProtocol& protocol) {
   SimulationParameters p;
-  for (std::size_t k = 0; k < c.x.size(); ++k) {
-    const int m = segments_for(c.x[k], sigma0, protocol);
+  const std::size_t first_point = c.x.size();
+  for (const double v : x) {
+    const int m = segments_for(v, c.sigma0, protocol);
+    c.x.push_back(v);
+    c.K.push_back(v * c.Kc);
     c.segments.push_back(m);
-    p.K.insert(p.K.end(), static_cast<std::size_t>(m), c.K[k]);
+    p.K.insert(p.K.end(), static_cast<std::size_t>(m), v * c.Kc);
   }
-  c.time_units = static_cast<double>(p.K.size()) * protocol.duration;
-
+  c.time_units += static_cast<double>(p.K.size()) * protocol.duration;
   p.h = protocol.h;
   p.duration = protocol.duration;
   p.transient = protocol.transient;
@@ -203,23 +201,25 @@ inline OnsetCurve measure_onset(const Network& net, double sigma0, const SweepPr
   p.replicas.clear();
   for (int b = 1; b <= protocol.replicas; ++b)
     p.replicas.push_back(
-        {protocol.omega, sigma0, protocol.seed_base + static_cast<std::uint64_t>(b)});
+        {protocol.omega, c.sigma0, protocol.seed_base + static_cast<std::uint64_t>(b)});
   p.record_stride = 1000;
   NetworkForce force(distributed);
   const SimulationResult r = simulate(distributed, net.degrees(), force, p);
-  std::size_t first = 0;
-  for (std::size_t k = 0; k < c.x.size(); ++k) {
+  std::size_t segment = 0;
+  for (std::size_t k = first_point; k < c.x.size(); ++k) {
     const int m = static_cast<int>(c.segments[k]);
-    reduce_point(c, r, first, m, equilibration_time(c.x[k], sigma0), protocol);
-    first += static_cast<std::size_t>(m);
+    reduce_point(c, r, segment, m, equilibration_time(c.x[k], c.sigma0), protocol);
+    segment += static_cast<std::size_t>(m);
   }
-  c.R0 = c.R.front();
+}
 
-  // The fit's points: equilibrated, excess inside the window.
+/// Points of the fit (equilibrated, excess in the window, theory finite) and both onsets.
+inline void fit_onsets(OnsetCurve& c) {
+  c.fitted.clear();
+  c.points = 0;
   for (std::size_t k = 0; k < c.x.size(); ++k) {
-    const double E = std::sqrt(std::max(c.R[k] * c.R[k] - c.R0 * c.R0, 0.0));
-    const bool use = c.equilibrated[k] != 0.0 && E >= kWindowLow && E <= kWindowHigh &&
-                     std::isfinite(c.R_theory[k]);
+    const bool use =
+        c.equilibrated[k] != 0.0 && in_window(excess(c.R[k], c.R0)) && std::isfinite(c.R_theory[k]);
     c.fitted.push_back(use ? 1.0 : 0.0);
     c.points += use ? 1 : 0;
   }
@@ -227,14 +227,74 @@ inline OnsetCurve measure_onset(const Network& net, double sigma0, const SweepPr
   c.x_on = sim.x;
   c.x_on_err = sim.err;
   c.x_on_theory = extrapolated_onset(c.x, c.R_theory, 0.0, c.R, c.R_err, c.fitted).x;
+}
+
+/// The refinement of onset_grid.hpp: a second sweep from K = 0 over the refined prefix of the
+/// grid (same seeds, so up to the first midpoint it repeats the first sweep exactly, which is
+/// printed as a check), then the first sweep's points beyond it. Returns the merged curve.
+inline OnsetCurve refined_sweep(const OnsetCurve& first, const DistributedNetwork& distributed,
+                                const Network& net, const std::vector<double>& added,
+                                const SweepProtocol& protocol) {
+  OnsetCurve c;
+  c.lambda = first.lambda, c.Kc = first.Kc, c.sigma0 = first.sigma0;
+  c.time_units = first.time_units;
+  run_sweep(c, distributed, net, refined_prefix(first.x, added), protocol);
+  double repeat = 0.0;
+  for (std::size_t k = 0; k < first.x.size() && first.x[k] < added.front(); ++k)
+    repeat = std::max(repeat, std::abs(first.R[k] - c.R[k]));
+  std::printf("  INFO  refined grid: %zu midpoints; the repeated prefix differs by %.3g\n",
+              added.size(), repeat);
+  const double last = c.x.back();
+  for (std::size_t k = 0; k < first.x.size(); ++k) {
+    if (first.x[k] <= last) continue;
+    c.x.push_back(first.x[k]), c.K.push_back(first.K[k]);
+    c.segments.push_back(first.segments[k]), c.equilibrated.push_back(first.equilibrated[k]);
+    c.R.push_back(first.R[k]), c.R_err.push_back(first.R_err[k]);
+  }
   return c;
 }
 
-/// Rows of a figure array: one per curve, the same grid length.
+/// Steps 1-3 for one network: lambda, the simulated sweep (refined once if the window holds
+/// fewer than kMinimumFitPoints points, onset_grid.hpp), the theory curve, both onsets.
+inline OnsetCurve measure_onset(const Network& net, double sigma0, const SweepProtocol& protocol) {
+  OnsetCurve c;
+  const DistributedNetwork distributed(net);
+  const PerronResult perron = perron_eigenpair(distributed);
+  c.lambda = perron.lambda;
+  c.sigma0 = sigma0;
+  c.Kc = 2.0 * sigma0 * sigma0 * static_cast<double>(net.size()) / c.lambda;
+  run_sweep(c, distributed, net, protocol.x, protocol);
+  c.R0 = c.R.front();
+  theory_curve(c, net, perron);
+  fit_onsets(c);
+  if (c.points >= kMinimumFitPoints) return c;
+  std::vector<double> E;
+  for (const double R : c.R) E.push_back(excess(R, c.R0));
+  const std::vector<double> added = refinement_points(c.x, E);
+  if (added.empty()) return c;
+  OnsetCurve refined = refined_sweep(c, distributed, net, added, protocol);
+  refined.R0 = refined.R.front();
+  theory_curve(refined, net, perron);
+  fit_onsets(refined);
+  return refined;
+}
+
+/// Columns of a figure array: the longest grid (refined grids are longer).
+inline std::size_t grid_columns(const std::vector<OnsetCurve>& curves) {
+  std::size_t cols = 0;
+  for (const OnsetCurve& c : curves) cols = std::max(cols, c.x.size());
+  return cols;
+}
+
+/// Rows of a figure array: one per curve, padded with NaN to grid_columns.
 inline std::vector<double> stack(const std::vector<OnsetCurve>& curves,
                                  std::vector<double> OnsetCurve::*member) {
+  const std::size_t cols = grid_columns(curves);
   std::vector<double> out;
-  for (const OnsetCurve& c : curves) out.insert(out.end(), (c.*member).begin(), (c.*member).end());
+  for (const OnsetCurve& c : curves) {
+    out.insert(out.end(), (c.*member).begin(), (c.*member).end());
+    out.insert(out.end(), cols - (c.*member).size(), NAN);
+  }
   return out;
 }
 
