@@ -1,7 +1,8 @@
 // Force-kernel throughput (nnz * steps per second) of one leap-frog step, beside baselines
 // measured in the same run:
-//  - LeapFrogStep/N/degree/replicas/threads: hmfnet's fused kernel (sincos once per rotor,
-//    interleaved [cos, sin] per neighbour for all replicas, Tpetra Import of ghosts), one step;
+//  - LeapFrogStep/N/degree/replicas/threads/precision: hmfnet's fused kernel (sincos once per
+//    rotor, interleaved [cos, sin] per neighbour for all replicas, Tpetra Import of ghosts), one
+//    step; precision 0 = float64, 1 = float32 gathered table and accumulation;
 //  - PlainCsrStep: the textbook loop a user would write first: two CSR products over separate
 //    cos and sin arrays, then the kick and drift (1 thread);
 //  - IndexStreamFloor: reading the int32 column array once (the memory floor of any pass).
@@ -27,7 +28,7 @@ void LeapFrogStep(benchmark::State& state) {
   const auto replicas = static_cast<int>(state.range(2));
   omp_set_num_threads(static_cast<int>(state.range(3)));
   const DistributedNetwork d(net);
-  NetworkForce force(d);
+  NetworkForce force(d, state.range(4) == 0 ? ForcePrecision::float64 : ForcePrecision::float32);
   std::vector<InitialCondition> ic;
   for (int b = 0; b < replicas; ++b) ic.push_back({6.0, 1.0, static_cast<std::uint64_t>(b)});
   RotorState s = initial_state(d.first_row(), d.local_size(), ic);
@@ -84,19 +85,25 @@ void IndexStreamFloor(benchmark::State& state) {
 
 }  // namespace
 
-// Args: N, mean degree, replicas, threads.
+// Args: N, mean degree, replicas, threads, precision (0 float64, 1 float32).
 BENCHMARK(LeapFrogStep)
-    ->Args({10000, 100, 1, 1})
-    ->Args({10000, 100, 1, 2})
-    ->Args({10000, 100, 4, 2})
-    ->Args({10000, 100, 8, 2})
+    ->Args({10000, 100, 1, 1, 0})
+    ->Args({10000, 100, 1, 1, 1})
+    ->Args({10000, 100, 1, 2, 0})
+    ->Args({10000, 100, 4, 2, 0})
+    ->Args({10000, 100, 8, 1, 0})
+    ->Args({10000, 100, 8, 1, 1})
+    ->Args({10000, 100, 8, 2, 0})
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(PlainCsrStep)->Args({10000, 100})->Unit(benchmark::kMillisecond);
 BENCHMARK(IndexStreamFloor)->Args({10000, 100})->Unit(benchmark::kMillisecond);
 BENCHMARK(LeapFrogStep)
-    ->Args({25000, 5000, 1, 1})
-    ->Args({25000, 5000, 1, 2})
+    ->Args({25000, 5000, 1, 1, 0})
+    ->Args({25000, 5000, 1, 1, 1})
+    ->Args({25000, 5000, 1, 2, 0})
+    ->Args({25000, 5000, 8, 1, 0})
+    ->Args({25000, 5000, 8, 1, 1})
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(PlainCsrStep)->Args({25000, 5000})->Unit(benchmark::kMillisecond);

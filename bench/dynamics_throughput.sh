@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Throughput of `hmfnet simulate` (nnz * steps per second of the integration loop, as the CLI
-# reports it) for 1 and 2 threads, 1 and 2 MPI ranks, and B = 1, 4, 8 replicas, on the issue's
-# networks; all in one run so the ratios are comparable. Run on an idle machine (OpenMP's
+# reports it) for 1 and 2 threads, 1 and 2 MPI ranks, B = 1, 4, 8 replicas and the float32
+# kernel (1 thread), on the networks; all in one run so the ratios are comparable. Run on an idle machine (OpenMP's
 # default active waiting is the fast choice there). Throughput counts every replica's work.
 # Usage: bench/dynamics_throughput.sh [BUILD_DIR (default build)] [--large]
 #   --large adds ER N = 25,000, degree 5,000 (1.25e8 nnz; ~6 GB with the Tpetra copy).
@@ -34,5 +34,7 @@ for spec in "${networks[@]}"; do
     measure "1 rank, 1 thread, B = $b" "${run[@]}" --threads 1 --replicas "$b"
     measure "1 rank, 2 threads, B = $b" "${run[@]}" --threads 2 --replicas "$b"
     measure "2 ranks x 1 thread, B = $b" "${mpi[@]}" -np 2 "${run[@]}" --threads 1 --replicas "$b"
+    measure "1 rank, 1 thread, B = $b, float32" "${run[@]}" --threads 1 --replicas "$b" \
+      --precision float32
   done
 done

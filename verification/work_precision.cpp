@@ -17,6 +17,11 @@
 // For every integrator and h in {0.01, 0.02, ..., 0.32} (and the reference): wall time and force
 //   evaluations per unit of simulated time, the largest relative energy error, and <R>_t. A run
 //   the blow-up guard stops (SimulationBlowUp) is recorded as unstable (NaN).
+// Precision: leapfrog and yoshida4 also run with the float32 force kernel (--precision float32;
+//   dynamics/network_force.hpp). They need the same force evaluations, so the choice below is
+//   made among the float64 methods and the float32 kernel is reported at the chosen step: its
+//   wall-time ratio (same run, same machine state) and whether its <R>_t error stays within half
+//   the floor. Its energy error includes the float32 evaluation of U itself (~1e-7 |U| / H).
 // Reference: yoshida4 at h = 0.005 from the same initial state. Measured: over the windows used
 //   here the trajectories stay close (|<R>_h - <R>_ref| ~ 1e-5 << SEM at h = 0.01), so the
 //   difference is the step's own error in <R>_t and is used as such.
@@ -34,6 +39,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <vector>
@@ -55,7 +61,17 @@ namespace {
 constexpr double k_nan = std::numeric_limits<double>::quiet_NaN();
 constexpr double k_paper_window = 500.0;  // T2 - T1 of Sec. numericalExperiments
 constexpr double k_fit_floor = 1e-10;     // see the header: orders are fitted above it
-const char* const k_methods[] = {"leapfrog", "yoshida4", "blanes_moan", "rk4"};
+// The float64 methods (indices 0-3: the choice is made among them by force evaluations) and
+// the float32 kernel with the two symplectic candidates (4-5: same evaluations, cheaper each).
+const char* const k_methods[] = {"leapfrog", "yoshida4",         "blanes_moan",
+                                 "rk4",      "leapfrog/float32", "yoshida4/float32"};
+constexpr int k_float64_methods = 4, k_all_methods = 6;
+
+std::string integrator_of(const std::string& method) { return method.substr(0, method.find('/')); }
+ForcePrecision precision_of(const std::string& method) {
+  return method.find("/float32") == std::string::npos ? ForcePrecision::float64
+                                                      : ForcePrecision::float32;
+}
 const double k_steps[] = {0.01, 0.02, 0.04, 0.08, 0.16, 0.32};
 
 struct Scale {
@@ -78,12 +94,12 @@ Measurement measure(const DistributedNetwork& d, const Network& net, double K,
   p.duration = s.duration;
   p.transient = s.transient;
   p.K = {K};
-  p.integrator = method;
+  p.integrator = integrator_of(method);
   p.record_stride = 10;  // the first record gives H and P of the start
   p.replicas.clear();
   for (int b = 1; b <= s.replicas; ++b)
     p.replicas.push_back({6.0, 0.35, static_cast<std::uint64_t>(b)});
-  NetworkForce force(d);
+  NetworkForce force(d, precision_of(method));
   Measurement m;
   try {
     const SimulationResult r = simulate(d, net.degrees(), force, p);
@@ -125,6 +141,29 @@ struct Scene {
   bool fit_orders;
 };
 
+// The float32 kernel at the chosen method and step (when it has a float32 variant): its wall-time
+// ratio to float64 in this run (same evaluations, so the ratio is the kernel's) and whether its
+// <R>_t error still stays within half the floor.
+void report_float32(verification::ClaimCheck& check, const std::string& scene,
+                    const std::string& best, double best_h, double floor,
+                    const std::vector<Measurement>& measured, const Measurement& ref) {
+  for (int m = k_float64_methods; m < k_all_methods; ++m) {
+    if (integrator_of(k_methods[m]) != best) continue;
+    for (std::size_t j = 0; j < std::size(k_steps); ++j) {
+      if (k_steps[j] != best_h) continue;
+      const int m64 = best == "leapfrog" ? 0 : 1;
+      const Measurement& x64 = measured[static_cast<std::size_t>(m64) * std::size(k_steps) + j];
+      const Measurement& x32 = measured[static_cast<std::size_t>(m) * std::size(k_steps) + j];
+      const double dR = std::abs(x32.R - ref.R);
+      check.report(scene + ": float32 kernel at the chosen step, wall-time speed-up over float64",
+                   x64.seconds_per_time / x32.seconds_per_time, 1.0,
+                   "(|<R> - <R>_ref| = " + verification::ClaimCheck::format(dR) +
+                       (dR <= 0.5 * floor ? " <= " : " > ") + "half the floor " +
+                       verification::ClaimCheck::format(0.5 * floor) + ")");
+    }
+  }
+}
+
 void run_scene(verification::ClaimCheck& check, const Scene& scene, const Scale& s, int index) {
   const DistributedNetwork d(*scene.net);
   const double lambda = perron_eigenpair(d).lambda;
@@ -138,22 +177,26 @@ void run_scene(verification::ClaimCheck& check, const Scene& scene, const Scale&
   Measurement paper;  // leap-frog h = 0.01, measured in the loop
   double best_cost = INFINITY, best_h = k_nan;
   std::string best = "none";
-  for (int m = 0; m < 4; ++m) {
+  std::vector<Measurement> measured(k_all_methods * std::size(k_steps));
+  for (int m = 0; m < k_all_methods; ++m) {
     std::vector<double> hs, errors;
-    for (const double h : k_steps) {
-      if (m > 0 && h < s.smallest_high_order_step) continue;
+    for (std::size_t j = 0; j < std::size(k_steps); ++j) {
+      const double h = k_steps[j];
+      const bool high_order = integrator_of(k_methods[m]) != "leapfrog";
+      if (high_order && h < s.smallest_high_order_step) continue;
       const Measurement x = measure(d, *scene.net, K, k_methods[m], h, s);
-      if (m == 0 && h == k_steps[0]) paper = x;
+      measured[static_cast<std::size_t>(m) * std::size(k_steps) + j] = x;
+      if (m == 0 && j == 0) paper = x;
       const double dR = std::abs(x.R - ref.R), sigma = std::hypot(x.sem, ref.sem);
       rows.insert(rows.end(), {static_cast<double>(m), h, x.seconds_per_time,
                                x.evaluations_per_time, x.energy_error, dR, sigma});
       if (x.energy_error >= k_fit_floor) hs.push_back(h), errors.push_back(x.energy_error);
       const bool adequate = dR <= 0.5 * floor;
-      if (adequate && x.evaluations_per_time < best_cost) {
+      if (m < k_float64_methods && adequate && x.evaluations_per_time < best_cost) {
         best_cost = x.evaluations_per_time, best_h = h, best = k_methods[m];
       }
     }
-    if (scene.fit_orders && m < 3) {
+    if (scene.fit_orders && m < 3) {  // float64 symplectic methods
       const double order = m == 0 ? 2.0 : 4.0;
       check.within_abs(scene.name + ": energy-error order of " + k_methods[m] + " (" +
                            std::to_string(hs.size()) + " steps fitted)",
@@ -161,6 +204,7 @@ void run_scene(verification::ClaimCheck& check, const Scene& scene, const Scale&
                        "modified Hamiltonian H + O(h^p); errors >= 1e-10 fitted");
     }
   }
+  report_float32(check, scene.name, best, best_h, floor, measured, ref);
   check.data("scene" + std::to_string(index), rows, rows.size() / 7, 7);
   check.data("scene" + std::to_string(index) + "_reference",
              {K, ref.R, ref.sem, floor, paper.seconds_per_time, paper.evaluations_per_time,

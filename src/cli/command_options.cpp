@@ -178,6 +178,10 @@ void add_simulate_options(CLI::App& app, SimulateFlags& f, const Run& run) {
                 "rk4 (non-symplectic contrast)");
   c->add_option("--force", f.force, "auto (rank-one fast path when A = a a^T), sparse, rank-one")
       ->check(CLI::IsMember({"auto", "sparse", "rank-one"}));
+  c->add_option("--precision", f.precision,
+                "Sparse force kernel: float64 (default) or float32 (storage and accumulation of "
+                "the gathered cos/sin; docs/choosing_a_method.md)")
+      ->check(CLI::IsMember({"float64", "float32"}));
   f.read.add_to(c);
   c->callback([&f, run] {
     if (f.K.empty() && f.K_over_Kc.empty() && f.sweep.empty()) {

@@ -74,6 +74,7 @@ struct SimulateFlags {
   int replicas = 1;
   int threads = 0;
   std::string output, checkpoint, force = "auto", integrator = "leapfrog";
+  std::string precision = "float64";
   bool resume = false, json = false, quiet = false, node_data = false, restart_each_K = false;
   int record_stride = 100;
   double energy_tolerance = 1e-2;

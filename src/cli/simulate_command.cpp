@@ -57,7 +57,13 @@ std::vector<double> parse_sweep(const std::string& text) {
 
 std::unique_ptr<CouplingForce> choose_force(const SimulateFlags& f, const Network& net,
                                             const DistributedNetwork& distributed) {
-  if (f.force != "sparse") {
+  const ForcePrecision precision = parse_force_precision(f.precision);
+  if (precision == ForcePrecision::float32 && f.force == "rank-one") {
+    throw ParameterError("--precision", "float32",
+                         "only for the sparse force (--force sparse|auto)");
+  }
+  // float32 is a property of the sparse kernel: asking for it selects that kernel under auto.
+  if (f.force != "sparse" && precision == ForcePrecision::float64) {
     auto structure = detect_rank_one(net);
     if (structure) {
       return std::make_unique<RankOneForce>(std::move(*structure), distributed.first_row(),
@@ -67,7 +73,7 @@ std::unique_ptr<CouplingForce> choose_force(const SimulateFlags& f, const Networ
       throw ParameterError("--force", "rank-one", "only for A = a a^T networks (see --help)");
     }
   }
-  return std::make_unique<NetworkForce>(distributed);
+  return std::make_unique<NetworkForce>(distributed, precision);
 }
 
 SimulationParameters parameters(const SimulateFlags& f, double Kc) {

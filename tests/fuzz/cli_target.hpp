@@ -80,6 +80,7 @@ inline void check_simulate(const cli::SimulateFlags& f, const std::string& line)
   c.positive(f.energy_tolerance, "--energy-tolerance not > 0");
   c.require(!f.resume || !f.checkpoint.empty(), "--resume without --checkpoint");
   c.require(f.force == "auto" || f.force == "sparse" || f.force == "rank-one", "--force");
+  c.require(f.precision == "float64" || f.precision == "float32", "--precision");
   c.read_flags(f.read);
 }
 
@@ -167,7 +168,9 @@ inline const std::vector<std::string>& argument_tokens() {
       "18446744073709551615", "18446744073709551616", "-18446744073709551615", "0x10", " 1", "1 ",
       "1,2", "1,nan", ",", "1,,2", "0:10:1", "1:0:1", "0:1:0", "0:1:nan", "a:b:c", ":", "capped",
       "poisson", "odds", "auto", "sparse", "rank-one", "leapfrog", "yoshida4", "blanes_moan", "rk4",
-      "", "-", "true", "x"};
+      "", "-", "true", "x",
+      // appended (token-mode seeds index the entries above)
+      "--precision", "float32", "float64"};
   return tokens;
 }
 
