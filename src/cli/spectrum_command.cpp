@@ -20,6 +20,8 @@ void print_text(const NetworkSummary& s) {
             << "mean degree        " << s.mean_degree << " (max " << s.max_degree << ")\n"
             << "lambda             " << s.lambda << " (residual " << s.lambda_residual << ", "
             << s.eigen_iterations << " iterations, " << s.eigen_seconds << " s)\n"
+            << "lambda_2           " << s.lambda2 << " (lambda / lambda_2 = " << s.second_mode_ratio
+            << ", Perron vector error <= " << s.eigenvector_error_bound << ")\n"
             << "rho                " << s.rho << "\n"
             << "G                  " << s.G << "\n"
             << "components         " << s.components << " (largest " << s.largest_component << ")\n"
@@ -33,6 +35,7 @@ void run(const SpectrumFlags& f) {
   const DistributedNetwork distributed(net);
   PerronOptions options;
   options.tolerance = f.tolerance;
+  options.second_eigenvalue = true;  // the gap: near-degenerate lambda is reported
   const PerronResult perron = perron_eigenpair(distributed, options);
   const NetworkSummary s = summarise(net, perron, f.sigma0);
   if (!is_root()) return;

@@ -1,6 +1,7 @@
 #include "spectral/network_summary.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "network/degree_statistics.hpp"
@@ -28,6 +29,9 @@ NetworkSummary summarise(const Network& network, const PerronResult& perron, dou
   s.lambda = perron.lambda;
   s.lambda_residual = perron.residual;
   s.perron_nonnegative = perron.nonnegative;
+  s.lambda2 = perron.lambda2;
+  s.second_mode_ratio = perron.lambda / perron.lambda2;
+  s.eigenvector_error_bound = perron.residual * perron.lambda / (perron.lambda - perron.lambda2);
   s.eigen_iterations = perron.iterations;
   s.eigen_seconds = perron.seconds;
   s.G = onset_amplitude(perron.lambda, s.mean_degree, perron.u);
@@ -42,6 +46,16 @@ NetworkSummary summarise(const Network& network, const PerronResult& perron, dou
   }
   if (s.bipartite) {
     s.warnings.push_back("bipartite network: -lambda is also an eigenvalue (lambda_min = -lambda)");
+  }
+  if (std::isfinite(s.lambda2) && s.lambda2 > 0.0 &&
+      s.second_mode_ratio < k_near_degenerate_ratio) {
+    s.warnings.push_back(
+        "near-degenerate lambda: lambda_2 = " + std::to_string(s.lambda2) +
+        ", lambda / lambda_2 = " + std::to_string(s.second_mode_ratio) +
+        ": a second mode goes unstable at that multiple of K_c (e.g. two weakly linked "
+        "communities), so the single-mode onset theory holds only below it; Perron vector "
+        "error <= " +
+        std::to_string(s.eigenvector_error_bound));
   }
   if (!s.perron_nonnegative) {
     s.warnings.push_back("the eigenvector of lambda changes sign: lambda is degenerate");
@@ -66,6 +80,11 @@ std::string to_json(const NetworkSummary& s) {
   j["largest_component"] = s.largest_component;
   j["bipartite"] = s.bipartite;
   j["perron_nonnegative"] = s.perron_nonnegative;
+  if (std::isfinite(s.lambda2)) {
+    j["lambda2"] = s.lambda2;
+    j["second_mode_ratio"] = s.second_mode_ratio;
+    j["eigenvector_error_bound"] = s.eigenvector_error_bound;
+  }
   j["eigensolver_iterations"] = s.eigen_iterations;
   j["eigensolver_seconds"] = s.eigen_seconds;
   if (s.sigma0 > 0.0) {

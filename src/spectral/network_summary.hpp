@@ -25,15 +25,27 @@ struct NetworkSummary {
   double lambda = 0.0;
   double lambda_residual = 0.0;
   bool perron_nonnegative = true;
+  /// lambda_2 (second largest eigenvalue) when the Perron solve was asked for it, else NaN;
+  /// second_mode_ratio = lambda / lambda_2 (the second mode of A goes unstable at that multiple
+  /// of K_c); eigenvector_error_bound = residual lambda / (lambda - lambda_2) (sin of the angle
+  /// between the computed and the exact u, Davis-Kahan).
+  double lambda2 = 0.0;
+  double second_mode_ratio = 0.0;
+  double eigenvector_error_bound = 0.0;
   int eigen_iterations = 0;
   double eigen_seconds = 0.0;
   double G = 0.0;
   double sigma0 = 0.0;  ///< 0: not given, Kc not computed
   double Kc = 0.0;
-  /// Why the theory's assumptions fail here (disconnected, bipartite, sign-changing u); empty if
-  /// they hold.
+  /// Why the theory's assumptions fail here (disconnected, bipartite, sign-changing u, a second
+  /// mode close to lambda); empty if they hold.
   std::vector<std::string> warnings;
 };
+
+/// A second eigenvalue this close to lambda is reported: lambda / lambda_2 < this means the second
+/// mode of A goes unstable below 1.1 K_c, inside the range where the paper measures the onset
+/// (the single-mode onset of eq:globalOrderRInDeltaK describes only K < (lambda / lambda_2) K_c).
+constexpr double k_near_degenerate_ratio = 1.1;
 
 /// Combines the structural facts with a Perron pair computed on the same network.
 NetworkSummary summarise(const Network& network, const PerronResult& perron, double sigma0 = 0.0);

@@ -13,7 +13,11 @@ namespace hmfnet {
 struct PerronOptions {
   double tolerance = 1e-10;  ///< Anasazi's relative residual tolerance ||Au - lambda u|| / |lambda|
   int max_restarts = 1000;
-  int num_blocks = 24;       ///< Krylov basis size, >= 3
+  int num_blocks = 24;  ///< Krylov basis size, >= 3
+  /// Also the second largest real eigenvalue lambda_2 (Krylov-Schur asked for two pairs): the
+  /// gap lambda - lambda_2 bounds the eigenvector's error (~ residual lambda / gap) and sets
+  /// where the second mode of A goes unstable (K = (lambda / lambda_2) K_c, eq:bkApprox).
+  bool second_eigenvalue = false;
 };
 
 struct PerronResult {
@@ -21,10 +25,12 @@ struct PerronResult {
   /// The whole vector on every rank, ||u||_2 = 1, sign chosen so that sum u > 0. Entries that are
   /// negative only by round-off (>= -1e3 eps max|u|) are set to 0.
   std::vector<double> u;
-  double residual = 0.0;  ///< ||A u - lambda u||_2 / |lambda|, recomputed here, not Anasazi's
+  double residual = 0.0;    ///< ||A u - lambda u||_2 / |lambda|, recomputed here, not Anasazi's
   bool nonnegative = true;  ///< false: u has entries of both signs (A reducible, lambda degenerate)
   int iterations = 0;
   double seconds = 0.0;
+  double lambda2 = 0.0;  ///< with PerronOptions::second_eigenvalue; NaN otherwise
+  double lambda2_residual = 0.0;
 };
 
 /// Collective. Throws ConvergenceError if Anasazi does not converge (never returns an

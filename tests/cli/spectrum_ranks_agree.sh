@@ -15,7 +15,7 @@ import json, sys
 a, b = json.loads(sys.argv[1]), json.loads(sys.argv[2])
 for key in ("n", "edges", "nnz", "self_loops", "components", "bipartite"):
     assert a[key] == b[key], (key, a[key], b[key])
-for key in ("lambda", "G", "rho", "mean_degree"):
+for key in ("lambda", "lambda2", "G", "rho", "mean_degree"):
     rel = abs(a[key] - b[key]) / abs(a[key])
     print(f"{key}: 1 rank {a[key]!r}, 2 ranks {b[key]!r}, relative difference {rel:.2e}")
     assert rel <= 1e-12, key

@@ -1,24 +1,39 @@
+#include <algorithm>
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
+#include "spectral/dense_spectrum.hpp"
 #include "spectral/network_summary.hpp"
 #include "support/small_networks.hpp"
+#include "support/tolerances.hpp"
 
 using namespace hmfnet;
 
 namespace {
 NetworkSummary summary_of(const Network& net, double sigma0 = 0.0) {
   const DistributedNetwork d(net);
-  return summarise(net, perron_eigenpair(d), sigma0);
+  PerronOptions options;
+  options.second_eigenvalue = true;  // as `hmfnet spectrum`
+  return summarise(net, perron_eigenpair(d, options), sigma0);
+}
+
+bool mentions(const std::vector<std::string>& warnings, const std::string& text) {
+  for (const auto& w : warnings)
+    if (w.find(text) != std::string::npos) return true;
+  return false;
 }
 }  // namespace
 
 TEST_CASE("Summary JSON has every key the CLI promises", "[summary]") {
   const auto j = nlohmann::json::parse(to_json(summary_of(erdos_renyi({500, 0.05, 1}), 0.35)));
   for (const char* key : {"n", "edges", "nnz", "self_loops", "mean_degree", "lambda",
-                          "lambda_residual", "rho", "G", "components", "bipartite", "Kc"}) {
+                          "lambda_residual", "lambda2", "second_mode_ratio",
+                          "eigenvector_error_bound", "rho", "G", "components", "bipartite", "Kc"}) {
     INFO(key);
     REQUIRE(j.contains(key));
   }
@@ -33,6 +48,36 @@ TEST_CASE("Summary reports a disconnected and a bipartite network as such", "[su
   REQUIRE(star.bipartite);
   REQUIRE_FALSE(star.warnings.empty());
   const NetworkSummary ring = summary_of(test::circulant(101, 2));
-  REQUIRE(ring.warnings.empty());
+  // A ring's spectrum is near-degenerate (lambda_2 = 2 cos(2 pi / 101) + 2 cos(4 pi / 101)
+  // = 3.99 against lambda = 4): that and nothing else is reported.
+  REQUIRE(ring.warnings.size() == 1);
+  REQUIRE(mentions(ring.warnings, "near-degenerate lambda"));
   REQUIRE(ring.G == Approx(std::sqrt(0.4)).epsilon(1e-8));  // regular: G = sqrt(2/5)
+}
+
+TEST_CASE("Near-degenerate lambda of two weakly linked communities is detected and reported",
+          "[summary]") {
+  // Blocks of 300, p_in = 0.1, p_out = 0.003: lambda ~ 30.9, lambda_2 ~ 29.1 (ratio ~ 1.06).
+  const Network sbm = test::two_block_sbm(300, 0.1, 0.003, 5);
+  const NetworkSummary s = summary_of(sbm);
+  const DenseSpectrum dense = dense_spectrum(sbm);
+  const double lambda2 = dense.eigenvalues[dense.eigenvalues.size() - 2];
+  INFO("lambda " << s.lambda << ", lambda_2 " << s.lambda2 << " (dense " << lambda2 << ")");
+  CHECK(s.components == 1);
+  CHECK(s.lambda2 == Approx(lambda2).epsilon(test::k_eigenvalue_rel));
+  CHECK(s.second_mode_ratio < k_near_degenerate_ratio);
+  CHECK(mentions(s.warnings, "near-degenerate lambda"));
+  // Davis-Kahan: the computed Perron vector is within the reported bound of the dense one.
+  const DistributedNetwork d(sbm);
+  const std::vector<double> u = perron_eigenpair(d).u;
+  double dot = 0.0;
+  for (std::size_t k = 0; k < u.size(); ++k) dot += u[k] * dense.perron[k];
+  CHECK(std::sqrt(std::max(0.0, 1.0 - dot * dot)) <=
+        s.eigenvector_error_bound + test::k_eigenvector_abs);
+  // The same construction with strong links between the blocks is not near-degenerate.
+  const NetworkSummary mixed = summary_of(test::two_block_sbm(300, 0.1, 0.08, 5));
+  INFO("mixed: lambda / lambda_2 " << mixed.second_mode_ratio);
+  CHECK(mixed.second_mode_ratio > k_near_degenerate_ratio);
+  CHECK_FALSE(mentions(mixed.warnings, "near-degenerate lambda"));
+  CHECK(mixed.warnings.empty());
 }
