@@ -63,6 +63,10 @@ SECTIONS = [
      "The paper integrates with leap-frog, h = 0.01. Which method and step give every figure "
      "at its statistical precision for the least work? Where does each method fail?",
      ["work_precision", "stability_limit"], ["work_precision"]),
+    ("Solving the self-consistent equations (not in the paper)",
+     "The paper solves eq:rSigmaBesselMain by plain fixed-point iteration, which converges slowly "
+     "near K_c. How slowly, what acceleration buys, and on which networks does each fail?",
+     ["solver_convergence"], ["solver_convergence"]),
     ("Conservation laws",
      "H and the total momentum are conserved (eq:hamiltonianNetworkCase); the symplectic "
      "leap-frog's energy error stays bounded.", ["conservation"], []),

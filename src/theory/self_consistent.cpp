@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "network/degree_statistics.hpp"
+#include "spectral/component_radii.hpp"
 #include "theory/all_to_all.hpp"
 #include "theory/onset_amplitude.hpp"
 
@@ -93,6 +94,32 @@ SelfConsistentSystem::SelfConsistentSystem(const Network& network, double lambda
   }
   m_shape = guess_shape(network, std::move(perron));
   m_onset_G = onset_amplitude(lambda, m_mean_degree, m_shape);
+  m_components = connected_components(network);
+  if (m_components.count > 1) m_component_lambda = component_radii(network, m_components).lambda;
+}
+
+std::vector<char> SelfConsistentSystem::active_components(double K, double mu0) const {
+  std::vector<char> active(m_component_lambda.size(), 0);
+  const double n = static_cast<double>(m_network.size());
+  for (std::size_t c = 0; c < active.size(); ++c)
+    active[c] = K * m_component_lambda[c] / (2.0 * n * mu0) > 1.0 ? 1 : 0;
+  return active;
+}
+
+std::vector<double> SelfConsistentSystem::component_shape(const std::vector<char>& active) const {
+  // u (or d) on the Perron component, mixed with d so that every active component starts
+  // coherent; exactly 0 on the inactive ones (a fixed point of the map: they stay incoherent).
+  const std::vector<double> degrees = m_network.degrees();
+  const double total_degree = std::accumulate(degrees.begin(), degrees.end(), 0.0);
+  std::vector<double> shape(m_shape.size(), 0.0);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < shape.size(); ++i) {
+    if (!active[static_cast<std::size_t>(m_components.label[i])]) continue;
+    shape[i] = 0.5 * (m_shape[i] + degrees[i] / total_degree);
+    sum += shape[i];
+  }
+  for (auto& x : shape) x /= sum;
+  return shape;
 }
 
 double SelfConsistentSystem::threshold() const {
@@ -102,10 +129,12 @@ double SelfConsistentSystem::threshold() const {
   return 2.0 * n * m_sigma0 * m_sigma0 / denominator;
 }
 
-std::vector<double> SelfConsistentSystem::first_guess(double kappa, double& mu) const {
+std::vector<double> SelfConsistentSystem::first_guess(double kappa, double& mu,
+                                                      const std::vector<double>* shape) const {
+  const std::vector<double>& f = shape != nullptr ? *shape : m_shape;
   const double R = std::min(m_onset_G * std::sqrt(kappa - 1.0), all_to_all_order_parameter(kappa));
-  std::vector<double> r(m_shape.size());
-  for (std::size_t i = 0; i < r.size(); ++i) r[i] = R * m_mean_degree * m_shape[i];
+  std::vector<double> r(f.size());
+  for (std::size_t i = 0; i < r.size(); ++i) r[i] = R * m_mean_degree * f[i];
   // The all-to-all variance mu0 (1 + 2 kappa R^2) (all_to_all.hpp), with mu0 kept positive.
   const double s2 = m_sigma0 * m_sigma0;
   mu = std::max(mu, 1e-3 * s2) + 2.0 * kappa * R * R * s2;
@@ -129,8 +158,72 @@ SelfConsistentSolution SelfConsistentSystem::solve(double K, const SelfConsisten
     out.sigma2 = mu0;
     return out;
   }
+  if (m_components.count <= 1) {
+    attempt(out, options, warm_start, nullptr);
+  } else {
+    // Disconnected: start the components above their own threshold at mu0 (the Perron one is);
+    // a component started coherent that is below threshold at the solution's larger mu decays
+    // to r = 0, which the log variables cannot reach (no convergence): it is then dropped, the
+    // one with the smallest lambda_c first, and the solve repeated. Evaluations add up.
+    std::vector<char> active = active_components(K, mu0);
+    int evaluations = 0;
+    for (;;) {
+      const std::vector<double> shape = component_shape(active);
+      const bool same_support = warm_start != nullptr && supports_match(*warm_start, active);
+      attempt(out, options, same_support ? warm_start : nullptr, &shape);
+      evaluations += out.iterations;
+      if (out.status == SolveStatus::converged || !drop_weakest(active)) break;
+    }
+    out.iterations = evaluations;
+    // A dropped component must be below its threshold at the solution's mu; otherwise the
+    // solution found is the unstable one with that component incoherent: not reported as one.
+    const double n_nodes = static_cast<double>(n);
+    for (std::size_t c = 0; c < active.size() && out.status == SolveStatus::converged; ++c) {
+      if (active[c] || !(K * m_component_lambda[c] / (2.0 * n_nodes * out.sigma2) > 1.0)) continue;
+      out.status = SolveStatus::failed;
+      out.message = "component " + std::to_string(c) + " (lambda_c " +
+                    short_number(m_component_lambda[c]) +
+                    ") is above its threshold at the solution's sigma^2 but did not converge "
+                    "when started coherent";
+    }
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+bool SelfConsistentSystem::supports_match(const SelfConsistentSolution& s,
+                                          const std::vector<char>& active) const {
+  if (s.r.size() != m_shape.size()) return false;
+  std::vector<char> coherent(active.size(), 0);
+  for (std::size_t i = 0; i < s.r.size(); ++i)
+    if (s.r[i] > 0.0) coherent[static_cast<std::size_t>(m_components.label[i])] = 1;
+  for (std::size_t c = 0; c < active.size(); ++c)
+    if (active[c] && !coherent[c]) return false;  // would keep an active component at r = 0
+  return true;
+}
+
+bool SelfConsistentSystem::drop_weakest(std::vector<char>& active) const {
+  std::size_t weakest = active.size(), count = 0;
+  for (std::size_t c = 0; c < active.size(); ++c) {
+    if (!active[c]) continue;
+    ++count;
+    if (weakest == active.size() || m_component_lambda[c] < m_component_lambda[weakest])
+      weakest = c;
+  }
+  if (count <= 1) return false;
+  active[weakest] = 0;
+  return true;
+}
+
+void SelfConsistentSystem::attempt(SelfConsistentSolution& out,
+                                   const SelfConsistentOptions& options,
+                                   const SelfConsistentSolution* warm_start,
+                                   const std::vector<double>* shape) const {
+  const double K = out.K;
+  const double mu0 = m_sigma0 * m_sigma0 - K * m_coherence;
+  const auto n = static_cast<std::size_t>(m_network.size());
   double mu = mu0;
-  std::vector<double> r = first_guess(out.K_over_Kc, mu);
+  std::vector<double> r = first_guess(out.K_over_Kc, mu, shape);
   const double R_guess = global_order_parameter(r, m_mean_degree);
   if (warm_start != nullptr && warm_start->status == SolveStatus::converged &&
       warm_start->r.size() == n) {
@@ -141,7 +234,7 @@ SelfConsistentSolution SelfConsistentSystem::solve(double K, const SelfConsisten
     const double mu0_previous = m_sigma0 * m_sigma0 - warm_start->K * m_coherence;
     double mu_unused = mu0_previous;
     const double R_previous =
-        global_order_parameter(first_guess(warm_start->K_over_Kc, mu_unused), m_mean_degree);
+        global_order_parameter(first_guess(warm_start->K_over_Kc, mu_unused, shape), m_mean_degree);
     r = warm_start->r;
     for (auto& x : r) x *= R_guess / R_previous;
     const double mu_warm = mu0 + (warm_start->sigma2 - mu0_previous) *
@@ -157,6 +250,8 @@ SelfConsistentSolution SelfConsistentSystem::solve(double K, const SelfConsisten
   out.iterations = fp.iterations;
   out.residual = fp.residual;
   out.restarts = fp.restarts;
+  out.status = SolveStatus::failed;
+  out.message.clear();
   if (!fp.converged) {
     out.message = "residual " + short_number(fp.residual) + " after " +
                   std::to_string(fp.iterations) + " iterations (tolerance " +
@@ -167,8 +262,6 @@ SelfConsistentSolution SelfConsistentSystem::solve(double K, const SelfConsisten
   } else {
     out.status = SolveStatus::converged;
   }
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return out;
 }
 
 std::vector<SelfConsistentSolution> SelfConsistentSystem::sweep(

@@ -20,11 +20,15 @@
 // approxOnsetSynchrony; degrees when u is not given) scaled to R = min(G sqrt(kappa - 1),
 // all-to-all R(kappa)), or in a sweep the previous solution moved along that curve (warm start
 // along K). A converged point whose R is below 1e-3 of the guess would be the incoherent root
-// and is reported as failed, never as a solution. Measured costs: docs/theory.md.
+// and is reported as failed, never as a solution. Disconnected networks: only the components
+// above their own threshold (K lambda_c / (2 N mu0) > 1, spectral/component_radii.hpp) start
+// coherent (r = 0 on a component is a fixed point of the map); see docs/theory.md. Measured
+// costs: docs/theory.md.
 #include <string>
 #include <vector>
 
 #include "network/network.hpp"
+#include "network/structure.hpp"
 #include "theory/self_consistent_map.hpp"
 
 namespace hmfnet {
@@ -73,15 +77,30 @@ class SelfConsistentSystem {
 
  private:
   /// r of the first guess at K/K_c = kappa; mu: in, the incoherent variance mu0; out, the guess.
-  std::vector<double> first_guess(double kappa, double& mu) const;
+  /// shape: the guess's shape (sum 1), m_shape when null.
+  std::vector<double> first_guess(double kappa, double& mu,
+                                  const std::vector<double>* shape = nullptr) const;
+  /// One solve from the first guess (or the warm start) of `shape`; fills out's solution fields.
+  void attempt(SelfConsistentSolution& out, const SelfConsistentOptions& options,
+               const SelfConsistentSolution* warm_start, const std::vector<double>* shape) const;
+  /// Disconnected networks: components with K lambda_c / (2 N mu0) > 1.
+  std::vector<char> active_components(double K, double mu0) const;
+  /// The first guess's shape with only the active components coherent, sum 1.
+  std::vector<double> component_shape(const std::vector<char>& active) const;
+  /// Whether s is coherent on every active component (a usable warm start).
+  bool supports_match(const SelfConsistentSolution& s, const std::vector<char>& active) const;
+  /// Deactivates the active component of smallest lambda_c; false if one or none is active.
+  bool drop_weakest(std::vector<char>& active) const;
 
   const Network& m_network;
   double m_lambda;
   double m_sigma0;
   double m_coherence;
   double m_mean_degree = 0.0;
-  std::vector<double> m_shape;  ///< u (or d), scaled to sum 1
-  double m_onset_G = 0.0;       ///< G of eq:globalOrderRInDeltaK with u = m_shape
+  std::vector<double> m_shape;             ///< u (or d), scaled to sum 1
+  Components m_components;                 ///< connected components of the network
+  std::vector<double> m_component_lambda;  ///< their lambda_c (only when disconnected)
+  double m_onset_G = 0.0;                  ///< G of eq:globalOrderRInDeltaK with u = m_shape
 };
 
 }  // namespace hmfnet

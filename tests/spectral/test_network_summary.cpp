@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "network/erdos_renyi.hpp"
+#include "network/stochastic_block.hpp"
 #include "parallel/distributed_network.hpp"
 #include "spectral/dense_spectrum.hpp"
 #include "spectral/network_summary.hpp"
@@ -58,7 +59,7 @@ TEST_CASE("Summary reports a disconnected and a bipartite network as such", "[su
 TEST_CASE("Near-degenerate lambda of two weakly linked communities is detected and reported",
           "[summary]") {
   // Blocks of 300, p_in = 0.1, p_out = 0.003: lambda ~ 30.9, lambda_2 ~ 29.1 (ratio ~ 1.06).
-  const Network sbm = test::two_block_sbm(300, 0.1, 0.003, 5);
+  const Network sbm = two_block_sbm({300, 0.1, 0.003, 5});
   const NetworkSummary s = summary_of(sbm);
   const DenseSpectrum dense = dense_spectrum(sbm);
   const double lambda2 = dense.eigenvalues[dense.eigenvalues.size() - 2];
@@ -75,7 +76,7 @@ TEST_CASE("Near-degenerate lambda of two weakly linked communities is detected a
   CHECK(std::sqrt(std::max(0.0, 1.0 - dot * dot)) <=
         s.eigenvector_error_bound + test::k_eigenvector_abs);
   // The same construction with strong links between the blocks is not near-degenerate.
-  const NetworkSummary mixed = summary_of(test::two_block_sbm(300, 0.1, 0.08, 5));
+  const NetworkSummary mixed = summary_of(two_block_sbm({300, 0.1, 0.08, 5}));
   INFO("mixed: lambda / lambda_2 " << mixed.second_mode_ratio);
   CHECK(mixed.second_mode_ratio > k_near_degenerate_ratio);
   CHECK_FALSE(mentions(mixed.warnings, "near-degenerate lambda"));

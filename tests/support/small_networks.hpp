@@ -5,12 +5,9 @@
 //   complete bipartite  K_{a,b}: lambda = sqrt(ab), bipartite
 //   ring / circulant    d-regular: lambda = d
 //   two disjoint cliques disconnected
-//   two-block SBM       lambda ~ n (p_in + p_out), lambda_2 ~ n (p_in - p_out) for blocks of n:
-//                       near-degenerate when p_out << p_in
 #include <utility>
 #include <vector>
 
-#include "core/random.hpp"
 #include "network/network.hpp"
 
 namespace hmfnet::test {
@@ -51,17 +48,6 @@ inline Network two_cliques(NodeIndex a, NodeIndex b) {
   for (NodeIndex i = 0; i < b; ++i)
     for (NodeIndex j = i + 1; j < b; ++j) e.emplace_back(a + i, a + j);
   return Network::from_undirected_edges(a + b, e);
-}
-
-/// Two-block stochastic block model: blocks of `half` nodes, links with probability p_in inside a
-/// block and p_out between blocks, each pair decided by one draw of the seeded generator.
-inline Network two_block_sbm(NodeIndex half, double p_in, double p_out, std::uint64_t seed) {
-  Rng rng(seed);
-  std::vector<std::pair<NodeIndex, NodeIndex>> e;
-  for (NodeIndex i = 0; i < 2 * half; ++i)
-    for (NodeIndex j = i + 1; j < 2 * half; ++j)
-      if (rng.uniform() < ((i < half) == (j < half) ? p_in : p_out)) e.emplace_back(i, j);
-  return Network::from_undirected_edges(2 * half, e);
 }
 
 }  // namespace hmfnet::test
