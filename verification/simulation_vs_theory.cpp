@@ -47,6 +47,7 @@
 #include "parallel/parallel_session.hpp"
 #include "spectral/perron.hpp"
 #include "support/claim_check.hpp"
+#include "support/run_variance.hpp"
 #include "theory/critical_coupling.hpp"
 #include "theory/onset_amplitude.hpp"
 #include "theory/self_consistent.hpp"
@@ -69,19 +70,6 @@ struct Panel {
   double sigma0;
 };
 
-// The theory depends on the initial state only through the conserved E and P (eq:Hsub0,
-// eq:MomentumConserved): mu0 = sigma0^2 + 2 U0 / N = 2 E / N - (P / N)^2. Read from the last
-// record at K of replica b (E is constant within a K up to the integrator's error).
-double incoherent_variance(const SimulationResult& sim, double K, std::size_t b, double n) {
-  const auto B = sim.points.front().R_mean.size();
-  std::size_t last = 0;
-  for (std::size_t i = 0; i < sim.series.K.size(); ++i) {
-    if (sim.series.K[i] == K) last = i;
-  }
-  const double P = sim.series.momentum[last * B + b] / n;
-  return 2.0 * sim.series.energy[last * B + b] / n - P * P;
-}
-
 struct PointStats {
   std::vector<double> mean, sem, sd;  ///< <R>_t over replicas: mean, combined SEM, replica sd
   std::vector<double> theory;         ///< eq:rSigmaBesselMain at each replica's E and P
@@ -101,7 +89,7 @@ PointStats point_statistics(const Panel& panel, const PerronResult& perron,
                 true};
   for (std::size_t k = 0; k < nk; ++k) {
     for (std::size_t b = 0; b < B; ++b) {
-      const double mu0 = incoherent_variance(sim, p.K[k], b, n);
+      const double mu0 = verification::incoherent_variance(sim, p.K[k], b, n);
       // mu0 = sigma0^2 - K c0 (self_consistent.hpp); late in a sweep mu0 can reach 0 or below.
       const double c0 = (panel.sigma0 * panel.sigma0 - mu0) / p.K[k];
       const SelfConsistentSystem system(panel.net, perron.lambda, panel.sigma0, c0, perron.u);

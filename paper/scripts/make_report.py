@@ -67,6 +67,10 @@ SECTIONS = [
      "The paper solves eq:rSigmaBesselMain by plain fixed-point iteration, which converges slowly "
      "near K_c. How slowly, what acceleration buys, and on which networks does each fail?",
      ["solver_convergence"], ["solver_convergence"]),
+    ("Networks that break the theory's assumptions (not in the paper)",
+     "The theory assumes a simple Perron eigenvalue and many neighbours per rotor. Are networks "
+     "that violate this flagged, and how far is the simulation from the theory on them?",
+     ["theory_breaking_networks"], ["theory_breaking_networks"]),
     ("Conservation laws",
      "H and the total momentum are conserved (eq:hamiltonianNetworkCase); the symplectic "
      "leap-frog's energy error stays bounded.", ["conservation"], []),

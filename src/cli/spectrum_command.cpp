@@ -1,4 +1,5 @@
 // `hmfnet spectrum`: lambda, Perron vector summaries, rho, G, structure, K_c.
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 
@@ -20,11 +21,17 @@ void print_text(const NetworkSummary& s) {
             << "mean degree        " << s.mean_degree << " (max " << s.max_degree << ")\n"
             << "lambda             " << s.lambda << " (residual " << s.lambda_residual << ", "
             << s.eigen_iterations << " iterations, " << s.eigen_seconds << " s)\n"
-            << "lambda_2           " << s.lambda2 << " (lambda / lambda_2 = " << s.second_mode_ratio
-            << ", Perron vector error <= " << s.eigenvector_error_bound << ")\n"
             << "rho                " << s.rho << "\n"
-            << "G                  " << s.G << "\n"
-            << "components         " << s.components << " (largest " << s.largest_component << ")\n"
+            << "G                  " << s.G << "\n";
+  if (std::isnan(s.lambda2)) {
+    // Few distinct eigenvalues (a star has three) defeat both Anasazi solvers for a second pair.
+    std::cout << "lambda_2           not found (no second eigenpair passed its residual check)\n";
+  } else {
+    std::cout << "lambda_2           " << s.lambda2
+              << " (lambda / lambda_2 = " << s.second_mode_ratio
+              << ", Perron vector error <= " << s.eigenvector_error_bound << ")\n";
+  }
+  std::cout << "components         " << s.components << " (largest " << s.largest_component << ")\n"
             << "bipartite          " << (s.bipartite ? "yes" : "no") << "\n";
   if (s.sigma0 > 0.0) std::cout << "K_c (sigma0 = " << s.sigma0 << ")  " << s.Kc << "\n";
   for (const auto& w : s.warnings) std::cout << "warning: " << w << "\n";

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "network/degree_statistics.hpp"
 #include "network/structure.hpp"
@@ -10,6 +12,14 @@
 #include "theory/onset_amplitude.hpp"
 
 namespace hmfnet {
+
+namespace {
+std::string short_number(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", x);
+  return buffer;
+}
+}  // namespace
 
 NetworkSummary summarise(const Network& network, const PerronResult& perron, double sigma0) {
   NetworkSummary s;
@@ -50,12 +60,12 @@ NetworkSummary summarise(const Network& network, const PerronResult& perron, dou
   if (std::isfinite(s.lambda2) && s.lambda2 > 0.0 &&
       s.second_mode_ratio < k_near_degenerate_ratio) {
     s.warnings.push_back(
-        "near-degenerate lambda: lambda_2 = " + std::to_string(s.lambda2) +
-        ", lambda / lambda_2 = " + std::to_string(s.second_mode_ratio) +
+        "near-degenerate lambda: lambda_2 = " + short_number(s.lambda2) +
+        ", lambda / lambda_2 = " + short_number(s.second_mode_ratio) +
         ": a second mode goes unstable at that multiple of K_c (e.g. two weakly linked "
         "communities), so the single-mode onset theory holds only below it; Perron vector "
         "error <= " +
-        std::to_string(s.eigenvector_error_bound));
+        short_number(s.eigenvector_error_bound));
   }
   if (!s.perron_nonnegative) {
     s.warnings.push_back("the eigenvector of lambda changes sign: lambda is degenerate");

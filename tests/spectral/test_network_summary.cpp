@@ -50,9 +50,11 @@ TEST_CASE("Summary reports a disconnected and a bipartite network as such", "[su
   REQUIRE_FALSE(star.warnings.empty());
   const NetworkSummary ring = summary_of(test::circulant(101, 2));
   // A ring's spectrum is near-degenerate (lambda_2 = 2 cos(2 pi / 101) + 2 cos(4 pi / 101)
-  // = 3.99 against lambda = 4): that and nothing else is reported.
+  // = 3.9807 against lambda = 4, a degenerate cosine pair): that and nothing else is reported.
   REQUIRE(ring.warnings.size() == 1);
   REQUIRE(mentions(ring.warnings, "near-degenerate lambda"));
+  REQUIRE(ring.lambda2 ==
+          Approx(2 * std::cos(2 * M_PI / 101) + 2 * std::cos(4 * M_PI / 101)).epsilon(1e-6));
   REQUIRE(ring.G == Approx(std::sqrt(0.4)).epsilon(1e-8));  // regular: G = sqrt(2/5)
 }
 
