@@ -19,7 +19,8 @@
 //   at K = 0 (the finite-size floor); the same fit (points, weights) on the self-consistent curve
 //   of the same network (eq:rSigmaBesselMain) gives x_on(theory).
 // Checks (support/onset_checks.hpp): per network, the onset is resolved (>= 3 equilibrated
-//   points in the fit window); x_on against 1 (eq:criticalKFirstOrder) and against x_on(theory)
+//   points in the fit window, after at most one refinement of the grid by the rule of
+//   support/onset_grid.hpp: at full scale ER <d> = 10, 20 and SF alpha 3.8 need it); x_on against 1 (eq:criticalKFirstOrder) and against x_on(theory)
 //   are reported (see "Not reproduced" below).
 //   (b) lines up: within each family the range of x_on <= the range of x_on(theory) (the
 //   collapse the theory itself predicts; G differs between networks) + 2 sqrt(2) max se (two
