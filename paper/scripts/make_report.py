@@ -133,6 +133,35 @@ def section(title, claim, drivers, figures, results, figure_dir, out_dir):
     return lines
 
 
+# Which work-precision scene stands for which figures of the paper (same network family and
+# coupling range); the step chosen for the scene is the step those figures need.
+SCENE_FIGURES = {
+    "ER 0.5 K_c": "Fig. 4 (ERerror: K = K_c / 2)",
+    "ER 1.5 K_c": "Figs. 1-3 and 5 (onsets and growth, 1 < K/K_c <= 2)",
+    "ER 3 K_c": "Figs. 6a, 7-8 (ER at 3 K_c)",
+    "SF alpha 2.8 3 K_c": "Figs. 1c-d, 2, 6b (scale-free)",
+}
+
+
+def step_choices(result):
+    """The chosen method and step per figure, with the speed-up over the paper's leap-frog
+    h = 0.01 in force evaluations (from verification_work_precision)."""
+    lines = ["### Step per figure", "",
+             "The cheapest method and step whose error in <R>_t stays within half the statistical "
+             "floor of the paper's averaging window (`docs/choosing_a_method.md`), per scene, and "
+             "the figures that scene stands for:", "",
+             "| figures | scene | method, h | force evaluations per unit time | speed-up over "
+             "leap-frog h = 0.01 |", "|---|---|---|---:|---:|"]
+    keys = sorted(k for k in result.notes if k.startswith("scene") and k[5:].isdigit())
+    for key in keys:
+        meta = result.note_json(key)
+        paper = result.series(f"{key}_reference")[5]
+        cost = meta["evaluations_per_time"]
+        lines.append(f"| {SCENE_FIGURES.get(meta['name'], '')} | {meta['name']} | "
+                     f"{meta['choice']}, {meta['h']:g} | {cost:.4g} | {paper / cost:.1f}x |")
+    return lines + [""]
+
+
 def summary(results):
     checks = sum(1 for r in results.values() for c in r.checks if c["kind"] == "check")
     failed = sum(1 for r in results.values() for c in r.checks
@@ -179,6 +208,8 @@ def main():
             skipped.append(title)
             continue
         lines += section(title, claim, drivers, figures, results, args.figures, out_dir)
+        if "work_precision" in drivers and "work_precision" in results:
+            lines += step_choices(results["work_precision"])
     others = [d for d in results if d not in used]
     if others:
         lines += ["## Other checks", ""]
