@@ -163,11 +163,20 @@ int main(int argc, char** argv) {
                 "all converged: " + std::string(curves[i].all_accelerated ? "yes" : "no") +
                     "; fitted slope " + ClaimCheck::format(slope) + " > -0.25");
   }
-  double slowest = INFINITY;  // bipartite plain count / ER plain count, eps <= 0.01
-  for (std::size_t k = 0; k < std::size(k_eps); ++k)
-    if (k_eps[k] <= 0.01) slowest = std::min(slowest, curves[4].plain[k] / curves[0].plain[k]);
+  // Bipartite plain count / ER plain count at eps <= 0.01: a bipartite run that did not
+  // converge within its cap (NaN) beside a converged ER run counts as infinitely slower; a point
+  // where ER itself did not converge compares nothing, and at least one comparison is required.
+  double slowest = INFINITY;
+  int compared = 0;
+  for (std::size_t k = 0; k < std::size(k_eps); ++k) {
+    if (k_eps[k] > 0.01 || !std::isfinite(curves[0].plain[k])) continue;
+    const double ratio =
+        std::isfinite(curves[4].plain[k]) ? curves[4].plain[k] / curves[0].plain[k] : INFINITY;
+    slowest = std::min(slowest, ratio);
+    ++compared;
+  }
   check.holds("SBM bipartite: plain iteration slower than on ER at every K/K_c - 1 <= 0.01",
-              slowest >= 2.0,
+              compared > 0 && slowest >= 2.0,
               "smallest count ratio " + ClaimCheck::format(slowest) +
                   " >= 2 (A's eigenvalue -lambda: a second, alternating slow mode; NaN: plain "
                   "not converged within its cap)");
@@ -180,13 +189,17 @@ int main(int argc, char** argv) {
                 curves[i].all_accelerated, "cold starts, tolerance 1e-10");
   for (std::size_t i = 0; i < curves.size(); ++i) {
     double worst = 0.0;  // largest |dR| / (10 tol / eps / R) where both converged
+    int points = 0;
     for (std::size_t k = 0; k < std::size(k_eps); ++k) {
       const double a = curves[i].R_accelerated[k], p = curves[i].R_plain[k];
-      if (std::isfinite(a) && std::isfinite(p))
-        worst = std::max(worst, std::abs(a - p) / (10.0 * kTolerance / k_eps[k] * a));
+      if (!std::isfinite(a) || !std::isfinite(p)) continue;
+      worst = std::max(worst, std::abs(a - p) / (10.0 * kTolerance / k_eps[k] * a));
+      ++points;
     }
-    check.holds(names[i] + ": accelerated and plain R agree where both converge", worst <= 1.0,
-                "largest |dR| / (10 tol R / eps) = " + ClaimCheck::format(worst));
+    check.holds(names[i] + ": accelerated and plain R agree where both converge",
+                points > 0 && worst <= 1.0,
+                std::to_string(points) + " points compared; largest |dR| / (10 tol R / eps) = " +
+                    ClaimCheck::format(worst));
   }
   check.data("counts", rows(curves), curves.size() * std::size(k_eps), 5);
   check.note("columns",

@@ -24,7 +24,7 @@ void print_text(const NetworkSummary& s) {
             << "rho                " << s.rho << "\n"
             << "G                  " << s.G << "\n";
   if (std::isnan(s.lambda2)) {
-    // Few distinct eigenvalues (a star has three) defeat both Anasazi solvers for a second pair.
+    // Few distinct eigenvalues (a star has three) defeat Krylov-Schur for a second pair.
     std::cout << "lambda_2           not found (no second eigenpair passed its residual check)\n";
   } else {
     std::cout << "lambda_2           " << s.lambda2

@@ -41,7 +41,8 @@ NetworkSummary summarise(const Network& network, const PerronResult& perron, dou
   s.perron_nonnegative = perron.nonnegative;
   s.lambda2 = perron.lambda2;
   s.second_mode_ratio = perron.lambda / perron.lambda2;
-  s.eigenvector_error_bound = perron.residual * perron.lambda / (perron.lambda - perron.lambda2);
+  if (perron.lambda2 < perron.lambda)  // false for NaN and for a degenerate lambda (no gap)
+    s.eigenvector_error_bound = perron.residual * perron.lambda / (perron.lambda - perron.lambda2);
   s.eigen_iterations = perron.iterations;
   s.eigen_seconds = perron.seconds;
   s.G = onset_amplitude(perron.lambda, s.mean_degree, perron.u);
@@ -93,7 +94,8 @@ std::string to_json(const NetworkSummary& s) {
   if (std::isfinite(s.lambda2)) {
     j["lambda2"] = s.lambda2;
     j["second_mode_ratio"] = s.second_mode_ratio;
-    j["eigenvector_error_bound"] = s.eigenvector_error_bound;
+    if (std::isfinite(s.eigenvector_error_bound))
+      j["eigenvector_error_bound"] = s.eigenvector_error_bound;
   }
   j["eigensolver_iterations"] = s.eigen_iterations;
   j["eigensolver_seconds"] = s.eigen_seconds;

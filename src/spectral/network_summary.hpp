@@ -2,6 +2,7 @@
 // Everything `hmfnet spectrum` reports about a network: sizes, degrees, rho (eq:rhodef),
 // structure (components, bipartiteness), lambda and its residual, G (eq:globalOrderRInDeltaK),
 // and K_c (eq:criticalKFirstOrder) when sigma0 is given.
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -29,9 +30,9 @@ struct NetworkSummary {
   /// second_mode_ratio = lambda / lambda_2 (the second mode of A goes unstable at that multiple
   /// of K_c); eigenvector_error_bound = residual lambda / (lambda - lambda_2) (sin of the angle
   /// between the computed and the exact u, Davis-Kahan).
-  double lambda2 = 0.0;
-  double second_mode_ratio = 0.0;
-  double eigenvector_error_bound = 0.0;
+  double lambda2 = std::numeric_limits<double>::quiet_NaN();
+  double second_mode_ratio = std::numeric_limits<double>::quiet_NaN();
+  double eigenvector_error_bound = std::numeric_limits<double>::quiet_NaN();  ///< NaN: no gap
   int eigen_iterations = 0;
   double eigen_seconds = 0.0;
   double G = 0.0;

@@ -192,9 +192,16 @@ PerronResult perron_eigenpair(const DistributedNetwork& network, const PerronOpt
     } catch (const std::exception&) {
       two.ok = false;
     }
-    if (two.ok && !two.u2.empty()) {
+    // Every rank must agree before the collective residual below (the projected problem is
+    // replicated, so they do; the reduction makes it certain).
+    int ok = two.ok && !two.u2.empty() ? 1 : 0, all_ok = 0;
+    Teuchos::reduceAll(*network.impl().map->getComm(), Teuchos::REDUCE_MIN, ok,
+                       Teuchos::outArg(all_ok));
+    if (all_ok == 1) {
       normalise_perron(two.u2);
-      const double residual2 = relative_residual(network, two.lambda2, two.u2);
+      // Relative to lambda, not lambda_2 (which may be 0: a star, K_ab).
+      const double residual2 =
+          relative_residual(network, two.lambda2, two.u2) * std::abs(two.lambda2) / r.lambda;
       // Only the eigenvalue is used (the gap), and for a symmetric A it is within residual2 |x|
       // of an eigenvalue (Bauer-Fike): 1e-6 relative decides lambda / lambda_2 < 1.1 with room.
       // A degenerate lambda_2 (a ring's cosine pair) leaves its vector less accurate than the

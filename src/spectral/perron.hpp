@@ -4,6 +4,7 @@
 // distributed Tpetra matrix, asking for the largest *real* eigenvalue ("LR"): on a bipartite
 // network -lambda has the same magnitude, so "largest magnitude" could return it.
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "parallel/distributed_network.hpp"
@@ -29,7 +30,7 @@ struct PerronResult {
   bool nonnegative = true;  ///< false: u has entries of both signs (A reducible, lambda degenerate)
   int iterations = 0;
   double seconds = 0.0;
-  double lambda2 = 0.0;  ///< with PerronOptions::second_eigenvalue; NaN otherwise
+  double lambda2 = std::numeric_limits<double>::quiet_NaN();  ///< NaN unless asked and found
   double lambda2_residual = 0.0;
 };
 

@@ -99,10 +99,17 @@ SelfConsistentSystem::SelfConsistentSystem(const Network& network, double lambda
 }
 
 std::vector<char> SelfConsistentSystem::active_components(double K, double mu0) const {
+  // K lambda_c > 2 N mu0 without dividing by mu0 (which can be <= 0 at large K with a coherent
+  // start). The component of the largest lambda_c is always active: the solve is only reached
+  // above the global threshold, and its power-iteration lambda_c may fall a hair below lambda.
   std::vector<char> active(m_component_lambda.size(), 0);
   const double n = static_cast<double>(m_network.size());
-  for (std::size_t c = 0; c < active.size(); ++c)
-    active[c] = K * m_component_lambda[c] / (2.0 * n * mu0) > 1.0 ? 1 : 0;
+  std::size_t largest = 0;
+  for (std::size_t c = 0; c < active.size(); ++c) {
+    active[c] = K * m_component_lambda[c] > 2.0 * n * mu0 ? 1 : 0;
+    if (m_component_lambda[c] > m_component_lambda[largest]) largest = c;
+  }
+  active[largest] = 1;
   return active;
 }
 
@@ -118,7 +125,8 @@ std::vector<double> SelfConsistentSystem::component_shape(const std::vector<char
     shape[i] = 0.5 * (m_shape[i] + degrees[i] / total_degree);
     sum += shape[i];
   }
-  for (auto& x : shape) x /= sum;
+  if (sum > 0.0)
+    for (auto& x : shape) x /= sum;
   return shape;
 }
 
@@ -172,14 +180,14 @@ SelfConsistentSolution SelfConsistentSystem::solve(double K, const SelfConsisten
       const bool same_support = warm_start != nullptr && supports_match(*warm_start, active);
       attempt(out, options, same_support ? warm_start : nullptr, &shape);
       evaluations += out.iterations;
-      if (out.status == SolveStatus::converged || !drop_weakest(active)) break;
+      if (out.status == SolveStatus::converged || !drop_decayed(active, K, out.sigma2)) break;
     }
     out.iterations = evaluations;
     // A dropped component must be below its threshold at the solution's mu; otherwise the
     // solution found is the unstable one with that component incoherent: not reported as one.
     const double n_nodes = static_cast<double>(n);
     for (std::size_t c = 0; c < active.size() && out.status == SolveStatus::converged; ++c) {
-      if (active[c] || !(K * m_component_lambda[c] / (2.0 * n_nodes * out.sigma2) > 1.0)) continue;
+      if (active[c] || !(K * m_component_lambda[c] > 2.0 * n_nodes * out.sigma2)) continue;
       out.status = SolveStatus::failed;
       out.message = "component " + std::to_string(c) + " (lambda_c " +
                     short_number(m_component_lambda[c]) +
@@ -197,9 +205,27 @@ bool SelfConsistentSystem::supports_match(const SelfConsistentSolution& s,
   std::vector<char> coherent(active.size(), 0);
   for (std::size_t i = 0; i < s.r.size(); ++i)
     if (s.r[i] > 0.0) coherent[static_cast<std::size_t>(m_components.label[i])] = 1;
+  // Both ways: a warm start at r = 0 on an active component would keep it there, and one
+  // coherent on an inactive component would start it coherent again.
   for (std::size_t c = 0; c < active.size(); ++c)
-    if (active[c] && !coherent[c]) return false;  // would keep an active component at r = 0
+    if (active[c] != coherent[c]) return false;
   return true;
+}
+
+bool SelfConsistentSystem::drop_decayed(std::vector<char>& active, double K, double sigma2) const {
+  // Every active component below its threshold at the failed attempt's last variance at once
+  // (many equal small components would otherwise cost one full attempt each); the weakest if
+  // none is, as long as another stays active.
+  const double n = static_cast<double>(m_network.size());
+  std::size_t count = 0, dropped = 0;
+  for (std::size_t c = 0; c < active.size(); ++c) count += active[c] ? 1u : 0u;
+  for (std::size_t c = 0; c < active.size() && count - dropped > 1; ++c) {
+    if (active[c] && sigma2 > 0.0 && !(K * m_component_lambda[c] > 2.0 * n * sigma2)) {
+      active[c] = 0;
+      ++dropped;
+    }
+  }
+  return dropped > 0 || drop_weakest(active);
 }
 
 bool SelfConsistentSystem::drop_weakest(std::vector<char>& active) const {

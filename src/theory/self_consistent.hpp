@@ -83,7 +83,7 @@ class SelfConsistentSystem {
   /// One solve from the first guess (or the warm start) of `shape`; fills out's solution fields.
   void attempt(SelfConsistentSolution& out, const SelfConsistentOptions& options,
                const SelfConsistentSolution* warm_start, const std::vector<double>* shape) const;
-  /// Disconnected networks: components with K lambda_c / (2 N mu0) > 1.
+  /// Disconnected networks: components with K lambda_c > 2 N mu0, and the largest one.
   std::vector<char> active_components(double K, double mu0) const;
   /// The first guess's shape with only the active components coherent, sum 1.
   std::vector<double> component_shape(const std::vector<char>& active) const;
@@ -91,6 +91,9 @@ class SelfConsistentSystem {
   bool supports_match(const SelfConsistentSolution& s, const std::vector<char>& active) const;
   /// Deactivates the active component of smallest lambda_c; false if one or none is active.
   bool drop_weakest(std::vector<char>& active) const;
+  /// After a failed attempt: deactivates the components below threshold at sigma2 (the last
+  /// iterate's variance), or else the weakest; false if nothing could be dropped.
+  bool drop_decayed(std::vector<char>& active, double K, double sigma2) const;
 
   const Network& m_network;
   double m_lambda;

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # `hmfnet spectrum --json` prints exactly one JSON object even when Anasazi fails internally: on a
-# star (three distinct eigenvalues) both solvers fail to find a second pair, and Anasazi used to
+# star (three distinct eigenvalues) Krylov-Schur fails to find a second pair, and Anasazi used to
 # print its exception to stdout, corrupting the JSON. lambda2 is then absent (unknown) and the
 # star is reported as bipartite.
 # Usage: spectrum_json_clean.sh HMFNET OUTDIR

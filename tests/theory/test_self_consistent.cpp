@@ -374,6 +374,22 @@ TEST_CASE(
   REQUIRE(test::equation_residual(net, K, 1.0, 0.0, s.r, s.sigma2) < 1e-10);
 }
 
+TEST_CASE(
+    "A disconnected network with a coherent start whose incoherent variance is negative still "
+    "solves [cliques K_20 and K_60 c0 > 0 mu0 < 0]",
+    "[theory]") {
+  // Review finding: the active components were chosen by dividing by mu0 = sigma0^2 - K c0,
+  // which is <= 0 here, so none was active and the first guess was 0 / 0.
+  const Network net = test::two_cliques(20, 60);
+  const double c0 = 0.02, K = 60.0;  // mu0 = 1 - 1.2 < 0
+  const SelfConsistentSystem system(net, 59.0, 1.0, c0);
+  const SelfConsistentSolution s = system.solve(K, tight());
+  INFO(s.message << "; R " << s.R << ", sigma^2 " << s.sigma2);
+  REQUIRE(std::isfinite(s.R));
+  REQUIRE(s.status == SolveStatus::converged);
+  REQUIRE(test::equation_residual(net, K, 1.0, c0, s.r, s.sigma2) < 1e-10);
+}
+
 TEST_CASE("The solver refuses meaningless input [bad parameters]", "[theory]") {
   const Network net = test::circulant(50, 2);
   REQUIRE_THROWS_AS(SelfConsistentSystem(net, 4.0, 0.0), ParameterError);

@@ -42,6 +42,12 @@ inline OnsetCurve check_onset(ClaimCheck& check, const std::string& name, const 
       name.c_str(), c.lambda, c.Kc, c.R0, c.time_units, grid.c_str());
   std::printf("  INFO  %s: x_on %.3f +- %.3f (%d points), same rule on theory %.3f\n", name.c_str(),
               c.x_on, c.x_on_err, c.points, c.x_on_theory);
+  if (!std::isnan(c.prefix_repeat)) {
+    check.holds(name + ": refined sweep repeats the first sweep up to the first midpoint",
+                c.prefix_repeat == 0.0,
+                "largest |d<R>| " + ClaimCheck::format(c.prefix_repeat) +
+                    " (same seeds and K sequence: bit-identical, onset_grid.hpp)");
+  }
   if (std::isnan(c.x_on) || std::isnan(c.x_on_theory)) {
     check.holds(name + ": onset resolved", false,
                 "fewer than 3 equilibrated grid points with excess in [0.1, 0.35] after the "

@@ -91,6 +91,9 @@ struct OnsetCurve {
   double x_on_theory = NAN;           ///< the same fit on the theory curve
   int points = 0;                     ///< grid points in the fit
   double time_units = 0.0;            ///< simulated time per replica
+  /// Refined grids: largest |<R>| difference between the two sweeps on the points before the
+  /// first midpoint (same seeds, same K sequence: must be 0); NaN when not refined.
+  double prefix_repeat = NAN;
 };
 
 struct Onset {
@@ -244,6 +247,7 @@ inline OnsetCurve refined_sweep(const OnsetCurve& first, const DistributedNetwor
     repeat = std::max(repeat, std::abs(first.R[k] - c.R[k]));
   std::printf("  INFO  refined grid: %zu midpoints; the repeated prefix differs by %.3g\n",
               added.size(), repeat);
+  c.prefix_repeat = repeat;
   const double last = c.x.back();
   for (std::size_t k = 0; k < first.x.size(); ++k) {
     if (first.x[k] <= last) continue;
