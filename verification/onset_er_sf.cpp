@@ -6,8 +6,10 @@
 //   against lambda K (sigma0 = 0.35, Omega = 6).
 // Run:   verification_onset_er_sf [--scale ci|full] [--output F.h5]   (ctest -L verification)
 //        ci: N = 1000, segments of T2 = 100, T1 = 50, h = 0.05, 3 replicas, 1600 time units per
-//        network (~90 s on one core); full: N = 10^4, T2 = 300, T1 = 150, h = 0.02, 1 replica
-//        (the paper's T2 = 1000, h = 0.01 on ten networks does not fit in 20 min on 2 cores). The
+//        network (~90 s on one core); full: N = 10^4, T2 = 300, T1 = 150, 1 replica,
+//        the method per grid point of support/pipeline_step.hpp (leap-frog h = 0.32 / 0.16 up
+//        to x = 1.5, blanes_moan 0.16 above; the work-precision choice) (the paper's T2 = 1000,
+//        h = 0.01 on ten networks does not fit in 20 min on 2 cores). The
 //        grid is given in x = K / K_c (support/onset_sweep.hpp), the same for every network, i.e.
 //        a common grid in lambda K; K is raised from 0, each K continuing from the current state.
 // Equilibration (support/onset_sweep.hpp): a segment at x > 1 counts only if the time already
@@ -20,8 +22,8 @@
 //   of the same network (eq:rSigmaBesselMain) gives x_on(theory).
 // Checks (support/onset_checks.hpp): per network, the onset is resolved (>= 3 equilibrated
 //   points in the fit window, after at most one refinement of the grid by the rule of
-//   support/onset_grid.hpp: at full scale ER <d> = 10, 20 and SF alpha 3.8 need it); x_on against 1 (eq:criticalKFirstOrder) and against x_on(theory)
-//   are reported (see "Not reproduced" below).
+//   support/onset_grid.hpp: at full scale ER <d> = 10, 20 and SF alpha 3.8 need it); x_on against 1
+//   (eq:criticalKFirstOrder) and against x_on(theory) are reported (see "Not reproduced" below).
 //   (b) lines up: within each family the range of x_on <= the range of x_on(theory) (the
 //   collapse the theory itself predicts; G differs between networks) + 2 sqrt(2) max se (two
 //   independent onsets differ by <= 2 sqrt(2) se at ~95%); se is the fit's standard error
@@ -66,7 +68,8 @@ constexpr double kSigma0 = 0.35;
 verification::SweepProtocol protocol(bool full) {
   verification::SweepProtocol p;
   p.x = {0.0, 0.5, 0.9, 1.1, 1.2, 1.35, 1.5, 2.0, 3.0};
-  p.h = full ? 0.02 : 0.05;
+  p.h = 0.05;               // ci (header: Step size)
+  p.pipeline_steps = full;  // paper scale: support/pipeline_step.hpp
   p.duration = full ? 300.0 : 100.0;
   p.transient = full ? 150.0 : 50.0;
   p.replicas = full ? 1 : 3;
@@ -84,6 +87,8 @@ int main(int argc, char** argv) {
   const bool full = check.full();
   const NodeIndex n = full ? 10000 : 1000;
   const verification::SweepProtocol p = protocol(full);
+  verification::SweepProtocol p_sf = p;
+  p_sf.family = verification::SceneFamily::scale_free;
   // Step 1: ER family (each network from its own seed).
   std::vector<OnsetCurve> er;
   const double degrees[] = {100, 50, 30, 20, 10};
@@ -107,12 +112,13 @@ int main(int argc, char** argv) {
     const Network net = chung_lu(power_law_targets(n, law, seed), LinkProbability::capped, seed);
     mean_degrees.push_back(mean_degree(net));
     sf.push_back(verification::check_onset(check, "SF alpha " + ClaimCheck::format(alphas[i]), net,
-                                           kSigma0, p));
+                                           kSigma0, p_sf));
   }
   verification::check_lines_up(check, "SF", sf, mean_degrees, "lambda K");
   verification::add_onset_figure_data(
       check, "sf", sf,
       R"(["alpha = 2.5", "alpha = 2.8", "alpha = 3.1", "alpha = 3.5", "alpha = 3.8"])");
+  if (full) check.note("steps", verification::pipeline_step_note());
   check.note("protocol", "{\"sigma0\": 0.35, \"omega\": 6, \"N\": " + std::to_string(n) + "}");
   return check.exit_code();
 }

@@ -7,7 +7,8 @@
 // Run:   verification_onset_rewired [--scale ci|full] [--output F.h5]   (ctest -L verification)
 //        ci: N = 1000, segments of T2 = 100, T1 = 50, h = 0.05, 3 replicas, near-onset points
 //        repeated until equilibrated (support/onset_sweep.hpp), 1600 time units per network;
-//        full: N = 10^4, T2 = 300, T1 = 150, h = 0.02, 1 replica. Capped Chung-Lu, d_min = 33.3,
+//        full: N = 10^4, T2 = 300, T1 = 150, 1 replica, steps of
+//        support/pipeline_step.hpp. Capped Chung-Lu, d_min = 33.3,
 //        targets capped at N - 1.
 // Networks: the original and two rewired ones, each rewired from the previous one (the paper's
 //   sequence), to rho0 + 0.05 and rho0 + 0.10: as in verification/table2_scale_free.cpp, the
@@ -65,7 +66,8 @@ int main(int argc, char** argv) {
   // Step 2: one sweep per network.
   verification::SweepProtocol p;
   p.x = {0.0, 0.5, 0.9, 1.1, 1.2, 1.35, 1.5, 2.0, 3.0};
-  p.h = full ? 0.02 : 0.05;
+  p.h = 0.05;               // ci (header: Step size)
+  p.pipeline_steps = full;  // paper scale: support/pipeline_step.hpp
   p.duration = full ? 300.0 : 100.0;
   p.transient = full ? 150.0 : 50.0;
   p.replicas = full ? 1 : 3;
@@ -85,6 +87,7 @@ int main(int argc, char** argv) {
                                "lambda K");
   verification::add_onset_figure_data(check, "sf", curves, labels + "]");
   check.data("sf_rho", rho);
+  if (full) check.note("steps", verification::pipeline_step_note());
   check.note("protocol", "{\"sigma0\": 0.35, \"omega\": 6, \"N\": " + std::to_string(n) + "}");
   return check.exit_code();
 }

@@ -8,12 +8,12 @@
 //        sigma0 = 0.2, 0.35, 0.5, 0.7 (a factor 3.5, a factor 12 in K_c).
 //        ci: N = 1000, q = 0.1 (the paper's ||d|| = 100; q = 0.01 would give ||d|| = 10 and a
 //        floor of 0.28), segments of T2 = 100, T1 = 50, h = 0.05, 3 replicas; full: N = 10^4,
-//        q = 0.01, T2 = 300, T1 = 150, h = 0.02, 1 replica. Near-onset points are repeated until
-//        equilibrated (support/onset_sweep.hpp: time at K >= 15 / gamma(x)); gamma scales with
-//        sigma0, so up to 6 segments here (sigma0 = 0.2: x = 1.2 x6, 1.35 x4, 1.5 x3), 1500-2100
-//        time units per sigma0.
-//        Each sigma0 has its own initial-condition seeds: with common seeds the runs would be one
-//        trajectory rescaled (p = Omega + sigma0 xi, time sigma0 t) and the check a tautology.
+//        q = 0.01, T2 = 300, T1 = 150, 1 replica, steps of support/pipeline_step.hpp. Near-onset
+//        points are repeated until equilibrated (support/onset_sweep.hpp: time at K >= 15 /
+//        gamma(x)); gamma scales with sigma0, so up to 6 segments here (sigma0 = 0.2: x = 1.2
+//        x6, 1.35 x4, 1.5 x3), 1500-2100 time units per sigma0. Each sigma0 has its own
+//        initial-condition seeds: with common seeds the runs would be one trajectory rescaled (p =
+//        Omega + sigma0 xi, time sigma0 t) and the check a tautology.
 // Onset and tolerances: as verification/onset_er_sf.cpp (support/onset_sweep.hpp): x_on = zero
 //   of the weighted line through (K / K_c, <R>^2 - R0^2) over the equilibrated points with
 //   excess in [0.1, 0.35]; the same fit on the theory curve gives x_on(theory).
@@ -46,7 +46,8 @@ int main(int argc, char** argv) {
   // Step 2: one sweep per sigma0, on the grid x = K / K_c(sigma0).
   verification::SweepProtocol p;
   p.x = {0.0, 0.5, 0.9, 1.1, 1.2, 1.35, 1.5, 2.0, 3.0};
-  p.h = full ? 0.02 : 0.05;
+  p.h = 0.05;               // ci (header: Step size)
+  p.pipeline_steps = full;  // paper scale: support/pipeline_step.hpp
   p.duration = full ? 300.0 : 100.0;
   p.transient = full ? 150.0 : 50.0;
   p.max_segments = 6;
@@ -63,6 +64,7 @@ int main(int argc, char** argv) {
                                "K / sigma0^2");
   verification::add_onset_figure_data(
       check, "er", curves, R"(["sigma0 = 0.2", "sigma0 = 0.35", "sigma0 = 0.5", "sigma0 = 0.7"])");
+  if (full) check.note("steps", verification::pipeline_step_note());
   check.note("protocol", "{\"omega\": 6, \"N\": " + std::to_string(n) +
                              ", \"q\": " + (full ? "0.01" : "0.1") + "}");
   return check.exit_code();

@@ -8,7 +8,11 @@
 // Run:   verification_simulation_vs_theory [--scale ci|full]   (ctest -L verification)
 //        ci: N = 2000 with ||d|| = 100 (the same degree, so the same finite-size floor), K/K_c in
 //        {0.5, 2, 3, 4}, per K T2 = 600, T1 = 300, h = 0.02 (h omega_max <= 0.15 here), 2
-//        replicas; full: N = 10^4, the same K, the paper's T2 = 1000, T1 = 500, h = 0.01.
+//        replicas; full: N = 10^4, the same K, the paper's T2 = 1000, T1 = 500, and per K the
+//        method of support/pipeline_step.hpp (the work-precision choice; ER: leap-frog h = 0.32
+//        at K_c / 2, blanes_moan 0.16 at 2-3 K_c, 0.08 at 4 K_c; SF, sigma0 = 1: leap-frog 0.08,
+//        0.04 at 4 K_c) instead of the paper's leap-frog
+//        h = 0.01.
 // Protocol: every K starts from the incoherent state (not the paper's sweep). The theory is a
 //   function of the conserved E and P of the start (eq:Hsub0, eq:sigmaSqEq); raising K at a fixed
 //   synchronized state changes E by (K2 - K1) U / K1 < 0, so a swept state has less energy than
@@ -47,6 +51,7 @@
 #include "parallel/parallel_session.hpp"
 #include "spectral/perron.hpp"
 #include "support/claim_check.hpp"
+#include "support/pipeline_step.hpp"
 #include "support/run_variance.hpp"
 #include "theory/critical_coupling.hpp"
 #include "theory/onset_amplitude.hpp"
@@ -62,12 +67,14 @@ struct Scale {
   std::vector<double> K_over_Kc;
   double duration, transient, h;
   int replicas;
+  bool pipeline_steps;  ///< per K support/pipeline_step.hpp instead of leap-frog with h
 };
 
 struct Panel {
   std::string name;
   Network net;
   double sigma0;
+  verification::SceneFamily family;  ///< the work-precision scene it resembles (pipeline_step)
 };
 
 struct PointStats {
@@ -190,7 +197,12 @@ void check_panel(ClaimCheck& check, const Panel& panel, const Scale& sc) {
   p.h = sc.h;
   p.duration = sc.duration;
   p.transient = sc.transient;
-  for (const double k : sc.K_over_Kc) p.K.push_back(k * Kc);
+  for (const double k : sc.K_over_Kc) {
+    p.K.push_back(k * Kc);
+    if (sc.pipeline_steps)
+      p.steps.push_back(
+          verification::pipeline_step(k, panel.sigma0, sc.duration, sc.transient, panel.family));
+  }
   p.replicas.clear();
   for (int b = 0; b < sc.replicas; ++b) {
     p.replicas.push_back({6.0, panel.sigma0, static_cast<std::uint64_t>(100 + b)});
@@ -243,8 +255,9 @@ int main(int argc, char** argv) {
                    "R_vs_K_theoretical)",
                    argc, argv);
   // Step 1: scale.
-  const Scale sc = check.full() ? Scale{10000, {0.5, 2, 3, 4}, 1000.0, 500.0, 0.01, 2}
-                                : Scale{2000, {0.5, 2, 3, 4}, 600.0, 300.0, 0.02, 2};
+  const Scale sc = check.full() ? Scale{10000, {0.5, 2, 3, 4}, 1000.0, 500.0, 0.01, 2, true}
+                                : Scale{2000, {0.5, 2, 3, 4}, 600.0, 300.0, 0.02, 2, false};
+  if (sc.pipeline_steps) check.note("steps", verification::pipeline_step_note());
   check.note("columns_points",
              "[\"K/K_c\", \"K\", \"R\", \"SEM\", \"replica sd\", \"theory (E, P)\", "
              "\"theory (sigma0)\", \"G sqrt(dK/K_c)\"]");
@@ -254,10 +267,10 @@ int main(int argc, char** argv) {
   const double q = erdos_renyi_probability(sc.n, 100.0);
   const double d_min = power_law_d_min_for_mean(2.8, 100.0);
   const std::vector<Panel> panels{
-      {"ER", erdos_renyi({sc.n, q, 1}), std::sqrt(0.12)},
+      {"ER", erdos_renyi({sc.n, q, 1}), std::sqrt(0.12), verification::SceneFamily::erdos_renyi},
       {"SF",
        chung_lu(power_law_targets(sc.n, {2.8, d_min, sc.n - 1.0}, 1), LinkProbability::capped, 1),
-       1.0}};
+       1.0, verification::SceneFamily::scale_free}};
   // Step 3: simulate, solve, compare.
   for (const Panel& panel : panels) check_panel(check, panel, sc);
   return check.exit_code();

@@ -25,6 +25,29 @@ using Clock = std::chrono::steady_clock;
 
 std::int64_t steps_for(double time, double h) { return std::llround(time / h); }
 
+/// Where the recorded time is measured from at segment k: the time and step count at the start
+/// of the last segment whose step differs from its predecessor's. With one step throughout it
+/// stays (0, 0), so t = steps * h exactly as with a single h.
+struct TimeOrigin {
+  double t = 0.0;
+  std::int64_t steps = 0;
+};
+
+TimeOrigin time_origin(const SimulationParameters& p, std::size_t k) {
+  TimeOrigin origin;
+  double t = 0.0;
+  std::int64_t steps = 0;
+  for (std::size_t j = 0; j <= k; ++j) {
+    const double h = step_at(p, j).h;
+    if (j > 0 && h != step_at(p, j - 1).h) origin = {t, steps};
+    if (j == k) break;
+    const std::int64_t n = steps_for(p.duration, h);
+    t = origin.t + static_cast<double>(steps + n - origin.steps) * h;
+    steps += n;
+  }
+  return origin;
+}
+
 // Accumulators of the K being integrated.
 struct Segment {
   std::int64_t step = 0;
@@ -45,7 +68,8 @@ class Run {
       : m_network(network),
         m_force(force),
         m_params(params),
-        m_integrator(make_integrator(params.integrator)),
+        m_integrator(make_integrator(step_at(params, 0).integrator)),
+        m_h(step_at(params, 0).h),
         m_f(force),
         m_width(static_cast<int>(params.replicas.size())),
         m_total_degree(std::accumulate(degrees.begin(), degrees.end(), 0.0)),
@@ -59,6 +83,9 @@ class Run {
   }
   std::vector<double> order_parameter() const;
   Observables observe(double K) const;
+  void use_step(int k_index);
+  std::int64_t segment_steps() const { return steps_for(m_params.duration, m_h); }
+  std::int64_t transient_steps() const { return steps_for(m_params.transient, m_h); }
   void start_segment(int k_index);
   void finish_segment(int k_index);
   void record(int k_index);
@@ -75,7 +102,9 @@ class Run {
   const DistributedNetwork& m_network;
   CouplingForce& m_force;
   const SimulationParameters& m_params;
-  std::unique_ptr<Integrator> m_integrator;
+  std::unique_ptr<Integrator> m_integrator;  // of the current segment (step_at)
+  double m_h;                                // of the current segment
+  TimeOrigin m_origin;                       // of the current segment (time_origin)
   ForceEvaluation m_f;
   int m_width;
   double m_total_degree;
@@ -126,14 +155,22 @@ Observables Run::observe(double K) const {
   return o;
 }
 
+void Run::use_step(int k_index) {
+  const StepChoice choice = step_at(m_params, static_cast<std::size_t>(k_index));
+  if (choice.integrator != m_integrator->name()) m_integrator = make_integrator(choice.integrator);
+  m_h = choice.h;
+  m_origin = time_origin(m_params, static_cast<std::size_t>(k_index));
+}
+
 void Run::start_segment(int k_index) {
   const double K = m_params.K[static_cast<std::size_t>(k_index)];
+  use_step(k_index);
   if (!m_params.continue_state && k_index > 0) {
     m_state = initial_state(m_network.first_row(), m_network.local_size(), m_params.replicas);
     m_f.update(m_state);
   }
-  const std::int64_t steps = steps_for(m_params.duration, m_params.h);
-  const std::int64_t transient = steps_for(m_params.transient, m_params.h);
+  const std::int64_t steps = segment_steps();
+  const std::int64_t transient = transient_steps();
   m_seg = Segment{};
   m_seg.R = BatchMeans(steps - transient, m_params.batches, m_width);
   const Observables o = observe(K);
@@ -152,8 +189,8 @@ void Run::start_segment(int k_index) {
 
 std::int64_t Run::rotor_samples() const {
   // Records fall on multiples of the stride and on the last step.
-  const std::int64_t steps = steps_for(m_params.duration, m_params.h);
-  const std::int64_t transient = steps_for(m_params.transient, m_params.h);
+  const std::int64_t steps = segment_steps();
+  const std::int64_t transient = transient_steps();
   const std::int64_t stride = m_params.record_stride;
   return steps / stride - transient / stride + (steps % stride != 0 ? 1 : 0);
 }
@@ -165,10 +202,10 @@ void Run::sample() {
   for (std::size_t k = 0; k < m_seg.R_node_sum.size(); ++k) {
     m_seg.R_node_sum[k] += std::sqrt(y[2 * k] * y[2 * k] + y[2 * k + 1] * y[2 * k + 1]) / m_n;
   }
-  const double t = static_cast<double>(m_seg.step) * m_params.h;
+  const double t = static_cast<double>(m_seg.step) * m_h;
   m_seg.stats.add(m_state, y, t, m_n);
   // psi_n - psi_1 once per time unit (Fig. histPsinMinusPsi1).
-  const std::int64_t per_unit = std::max<std::int64_t>(1, std::llround(1.0 / m_params.h));
+  const std::int64_t per_unit = std::max<std::int64_t>(1, std::llround(1.0 / m_h));
   if (m_seg.step % per_unit == 0) m_seg.stats.add_phase_sample(y, m_width);
 }
 
@@ -190,13 +227,13 @@ void Run::guard(double K, const Observables& o) {
                   "K = %g, t = %g (replica %zu): %s; the step h = %g is likely too large for "
                   "this K: leap-frog needs h * omega_max < 2 with omega_max = sqrt(K max_n R_n) "
                   "= %.4g, i.e. h < %.4g",
-                  K, static_cast<double>(m_seg.step) * m_params.h, b,
+                  K, static_cast<double>(m_seg.step) * m_h, b,
                   std::isfinite(err)
                       ? ("relative energy error " + std::to_string(err) +
                          " exceeds the tolerance " + std::to_string(m_params.energy_tolerance))
                             .c_str()
                       : "energy is NaN or infinite",
-                  m_params.h, omega, omega > 0 ? 2.0 / omega : INFINITY);
+                  m_h, omega, omega > 0 ? 2.0 / omega : INFINITY);
     throw SimulationBlowUp(message);
   }
 }
@@ -204,8 +241,8 @@ void Run::guard(double K, const Observables& o) {
 void Run::record(int k_index) {
   const double K = m_params.K[static_cast<std::size_t>(k_index)];
   const Observables o = observe(K);
-  if (m_params.node_data && m_seg.step > steps_for(m_params.transient, m_params.h)) {
-    m_seg.stats.add_rotor_sample(m_state, static_cast<double>(m_seg.step) * m_params.h);
+  if (m_params.node_data && m_seg.step > transient_steps()) {
+    m_seg.stats.add_rotor_sample(m_state, static_cast<double>(m_seg.step) * m_h);
   }
   for (std::size_t b = 0; b < o.energy.size(); ++b) {
     const double err = std::abs(o.energy[b] - m_seg.energy0[b]) / std::abs(m_seg.energy0[b]);
@@ -214,7 +251,7 @@ void Run::record(int k_index) {
     m_seg.momentum_drift_max[b] = std::max(m_seg.momentum_drift_max[b], drift);
   }
   auto& ts = m_result.series;
-  ts.t.push_back(static_cast<double>(m_result.steps) * m_params.h);
+  ts.t.push_back(m_origin.t + static_cast<double>(m_result.steps - m_origin.steps) * m_h);
   ts.K.push_back(K);
   ts.R.insert(ts.R.end(), o.R.begin(), o.R.end());
   ts.energy.insert(ts.energy.end(), o.energy.begin(), o.energy.end());
@@ -313,10 +350,9 @@ void Run::restore(const Checkpoint& c) {
   m_state.p = scatter(c.p);
   m_f.update(m_state);
   m_k_start = c.k_index;
+  use_step(c.k_index);
   m_seg = Segment{};
-  m_seg.R = BatchMeans(
-      steps_for(m_params.duration, m_params.h) - steps_for(m_params.transient, m_params.h),
-      m_params.batches, m_width);
+  m_seg.R = BatchMeans(segment_steps() - transient_steps(), m_params.batches, m_width);
   m_seg.step = c.segment_step;
   m_seg.R.restore(c.batch_count, c.batch_sums);
   m_seg.energy0 = c.energy0;
@@ -373,13 +409,13 @@ void Run::progress(int k_index, bool final_line) const {
   if (!m_params.progress || ParallelSession::rank() != 0) return;
   const double seconds = std::chrono::duration<double>(Clock::now() - m_loop_start).count();
   const double done = static_cast<double>(m_result.steps);
-  const double total = static_cast<double>(steps_for(m_params.duration, m_params.h)) *
-                       static_cast<double>(m_params.K.size());
+  double total = 0.0;
+  for (std::size_t k = 0; k < m_params.K.size(); ++k)
+    total += static_cast<double>(steps_for(m_params.duration, step_at(m_params, k).h));
   const double rate = seconds > 0 ? done / seconds : 0.0;
   std::fprintf(stderr, "\rK = %-10g t = %-9.1f %8.0f steps/s  %6.1f s left   %s",
-               m_params.K[static_cast<std::size_t>(k_index)],
-               static_cast<double>(m_seg.step) * m_params.h, rate,
-               rate > 0 ? (total - done) / rate : 0.0, final_line ? "\n" : "");
+               m_params.K[static_cast<std::size_t>(k_index)], static_cast<double>(m_seg.step) * m_h,
+               rate, rate > 0 ? (total - done) / rate : 0.0, final_line ? "\n" : "");
 }
 
 SimulationResult Run::execute() {
@@ -392,8 +428,6 @@ SimulationResult Run::execute() {
   } else {
     start_segment(0);
   }
-  const std::int64_t steps = steps_for(m_params.duration, m_params.h);
-  const std::int64_t transient = steps_for(m_params.transient, m_params.h);
   m_loop_start = Clock::now();
   m_last_checkpoint = m_loop_start;
   std::int64_t session_steps = 0;
@@ -403,12 +437,13 @@ SimulationResult Run::execute() {
       maybe_checkpoint(k, true);  // at every K: a resume restarts here at worst
     }
     const std::vector<double> K = K_per_replica(m_params.K[static_cast<std::size_t>(k)]);
+    const std::int64_t steps = segment_steps(), transient = transient_steps();
     while (m_seg.step < steps) {
       if (m_params.stop_after_steps > 0 && ++session_steps > m_params.stop_after_steps) {
         m_result.interrupted = true;
         return m_result;
       }
-      m_integrator->step(m_state, m_params.h, K, m_f);
+      m_integrator->step(m_state, m_h, K, m_f);
       ++m_seg.step;
       ++m_result.steps;
       if (m_seg.step > transient) sample();
@@ -440,6 +475,10 @@ SimulationResult Run::execute() {
 
 }  // namespace
 
+StepChoice step_at(const SimulationParameters& p, std::size_t k) {
+  return p.steps.empty() ? StepChoice{p.integrator, p.h} : p.steps.at(k);
+}
+
 void validate(const SimulationParameters& p) {
   const auto positive = [](double x) { return x > 0.0 && std::isfinite(x); };
   if (!positive(p.h)) throw ParameterError("h", std::to_string(p.h), "h > 0");
@@ -449,12 +488,27 @@ void validate(const SimulationParameters& p) {
   if (!positive(p.duration) || !(p.duration > p.transient)) {
     throw ParameterError("T", std::to_string(p.duration), "T > transient >= 0");
   }
-  const std::int64_t samples = steps_for(p.duration, p.h) - steps_for(p.transient, p.h);
-  if (samples < p.batches) {
-    throw ParameterError("T - transient", std::to_string(p.duration - p.transient),
-                         "at least " + std::to_string(p.batches) + " steps of h to average over");
-  }
   if (p.K.empty()) throw ParameterError("K", "empty schedule", "at least one K >= 0");
+  if (!p.steps.empty() && p.steps.size() != p.K.size()) {
+    throw ParameterError("steps", std::to_string(p.steps.size()) + " entries",
+                         "none, or one per K (" + std::to_string(p.K.size()) + ")");
+  }
+  for (std::size_t k = 0; k < p.steps.size(); ++k) {
+    if (!positive(p.steps[k].h)) {
+      throw ParameterError("steps[" + std::to_string(k) + "].h", std::to_string(p.steps[k].h),
+                           "h > 0");
+    }
+    make_integrator(p.steps[k].integrator);  // unknown names fail here, before any work
+  }
+  for (std::size_t k = 0; k < std::max<std::size_t>(p.steps.size(), 1); ++k) {
+    const double h = step_at(p, k).h;
+    const std::int64_t samples = steps_for(p.duration, h) - steps_for(p.transient, h);
+    if (samples < p.batches) {
+      throw ParameterError("T - transient", std::to_string(p.duration - p.transient),
+                           "at least " + std::to_string(p.batches) +
+                               " steps of h = " + std::to_string(h) + " to average over");
+    }
+  }
   for (const double K : p.K) {
     if (!(K >= 0.0) || !std::isfinite(K)) throw ParameterError("K", std::to_string(K), "K >= 0");
   }
@@ -490,6 +544,8 @@ std::string fingerprint(const SimulationParameters& p, const DistributedNetwork&
   j["rotor_node"] = p.rotor_node;
   j["phase_bins"] = p.phase_bins;
   j["integrator"] = p.integrator;
+  // Only when set, so the fingerprints (and checkpoints) of single-step runs are unchanged.
+  for (const auto& s : p.steps) j["steps"].push_back({{"integrator", s.integrator}, {"h", s.h}});
   j["n"] = network.global_size();
   j["nnz"] = network.global_nnz();
   return j.dump();

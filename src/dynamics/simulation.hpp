@@ -17,6 +17,7 @@
 #include "dynamics/coupling_force.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/rotor_state.hpp"
+#include "dynamics/step_choice.hpp"
 #include "parallel/distributed_network.hpp"
 
 namespace hmfnet {
@@ -37,6 +38,10 @@ struct SimulationParameters {
   NodeIndex rotor_node = 0;        ///< node_data: the rotor whose (theta_bar, p_bar) is sampled
   int phase_bins = 72;             ///< node_data: bins of the psi_n - psi_1 histogram
   std::string integrator = "leapfrog";
+  /// Optional per-K method: empty, or one entry per element of K that replaces h and integrator
+  /// for that K's segment (each segment still has T and T1 in time units; the state carries
+  /// over, since the force cache of an integrator step is method-independent).
+  std::vector<StepChoice> steps;
   std::string checkpoint_path;      ///< empty: no checkpoints
   double checkpoint_seconds = 5.0;  ///< wall time between checkpoints (also at each K's end)
   bool resume = false;              ///< continue from checkpoint_path if it exists
@@ -48,6 +53,9 @@ struct SimulationParameters {
 
 /// Throws ParameterError naming the first parameter out of range.
 void validate(const SimulationParameters& params);
+
+/// The integrator and step of the k-th K: params.steps[k], or (integrator, h) when steps is empty.
+StepChoice step_at(const SimulationParameters& params, std::size_t k);
 
 struct PointResult {
   double K = 0.0;

@@ -258,3 +258,90 @@ TEST_CASE("Node statistics are consistent: r_n <= <R_n>_t / full histograms / al
   INFO("frame " << pt.frame[0] << ", <r cos> " << sync << ", |<Re z e^-i theta>| " << fluct);
   REQUIRE(sync > 3.0 * fluct);
 }
+
+TEST_CASE("A per-K step list equal to the single step reproduces the run bit for bit",
+          "[simulation]") {
+  const Network net = erdos_renyi({300, 0.05, 7});
+  const DistributedNetwork d(net);
+  NetworkForce force(d);
+  SimulationParameters plain = short_run();
+  SimulationParameters listed = plain;
+  listed.steps.assign(plain.K.size(), StepChoice{plain.integrator, plain.h});
+  const SimulationResult a = simulate(d, net.degrees(), force, plain);
+  const SimulationResult b = simulate(d, net.degrees(), force, listed);
+  for (std::size_t k = 0; k < a.points.size(); ++k)
+    REQUIRE(a.points[k].R_mean == b.points[k].R_mean);
+  REQUIRE(a.series.t == b.series.t);
+  REQUIRE(a.series.energy == b.series.energy);
+  REQUIRE(a.force_evaluations == b.force_evaluations);
+}
+
+TEST_CASE("Per-K steps: each segment runs its own method and step from the state left before",
+          "[simulation]") {
+  const Network net = erdos_renyi({300, 0.05, 8});
+  const DistributedNetwork d(net);
+  NetworkForce force(d);
+  SimulationParameters mixed = short_run();
+  mixed.K = {20.0, 60.0};
+  mixed.steps = {{"leapfrog", 0.02}, {"blanes_moan", 0.04}};
+  const SimulationResult r = simulate(d, net.degrees(), force, mixed);
+  // The first segment is the plain leap-frog run of its K, bit for bit.
+  SimulationParameters first = short_run();
+  first.K = {20.0};
+  const SimulationResult f = simulate(d, net.degrees(), force, first);
+  REQUIRE(r.points[0].R_mean == f.points[0].R_mean);
+  REQUIRE(r.points[0].energy_rel_error_max == f.points[0].energy_rel_error_max);
+  // Cost: the second segment is 4 / 0.04 = 100 steps of 6 evaluations (integrator.hpp).
+  REQUIRE(r.force_evaluations == f.force_evaluations + 100 * 6);
+  REQUIRE(r.steps == f.steps + 100);
+  // Recorded times: every 10 steps of the segment's own h, ending at 2 T.
+  const auto& t = r.series.t;
+  REQUIRE(t.back() == Approx(8.0).epsilon(1e-12));
+  REQUIRE(t[t.size() - 1] - t[t.size() - 2] == Approx(10 * 0.04).epsilon(1e-12));
+  REQUIRE(t[0] == Approx(10 * 0.02).epsilon(1e-12));
+  for (std::size_t k = 1; k < t.size(); ++k) REQUIRE(t[k] > t[k - 1]);
+  // Fourth order at h = 0.04 keeps the energy error below leap-frog's at 0.02 on this segment.
+  SimulationParameters leapfrog = mixed;
+  leapfrog.steps[1] = {"leapfrog", 0.02};
+  const SimulationResult l = simulate(d, net.degrees(), force, leapfrog);
+  REQUIRE(r.points[1].energy_rel_error_max[0] < l.points[1].energy_rel_error_max[0]);
+}
+
+TEST_CASE("Checkpoint and resume inside a segment of another step end bit-identical",
+          "[simulation]") {
+  const Network net = erdos_renyi({300, 0.05, 9});
+  const DistributedNetwork d(net);
+  NetworkForce force(d);
+  SimulationParameters p = short_run();
+  p.steps = {{"leapfrog", 0.02}, {"yoshida4", 0.04}, {"leapfrog", 0.01}};
+  const SimulationResult whole = simulate(d, net.degrees(), force, p);
+  p.checkpoint_path = temp_path("hmfnet_test_checkpoint_steps");
+  if (ParallelSession::rank() == 0) std::filesystem::remove(p.checkpoint_path);
+  ParallelSession::max(0.0);
+  p.checkpoint_seconds = 0.0;
+  for (const std::int64_t stop : {230, 250, 0}) {  // stops in segments 2 and 3, then the end
+    p.stop_after_steps = stop;
+    p.resume = true;
+    const SimulationResult part = simulate(d, net.degrees(), force, p);
+    if (stop != 0) continue;
+    REQUIRE(part.resumed);
+    for (std::size_t k = 0; k < whole.points.size(); ++k)
+      REQUIRE(part.points[k].R_mean == whole.points[k].R_mean);
+    REQUIRE(part.series.t == whole.series.t);
+    REQUIRE(part.series.energy == whole.series.energy);
+    REQUIRE(part.force_evaluations == whole.force_evaluations);
+  }
+  if (ParallelSession::rank() == 0) std::filesystem::remove(p.checkpoint_path);
+}
+
+TEST_CASE("A per-K step list is range-checked naming the entry", "[simulation]") {
+  SimulationParameters p = short_run();
+  p.steps = {{"leapfrog", 0.02}};
+  REQUIRE_THROWS_WITH(validate(p), Catch::Contains("one per K (3)"));
+  p.steps = {{"leapfrog", 0.02}, {"leapfrog", 0.0}, {"leapfrog", 0.02}};
+  REQUIRE_THROWS_WITH(validate(p), Catch::Contains("steps[1].h"));
+  p.steps = {{"leapfrog", 0.02}, {"leapfrog", 0.02}, {"euler", 0.02}};
+  REQUIRE_THROWS_WITH(validate(p), Catch::Contains("euler"));
+  p.steps = {{"leapfrog", 0.02}, {"leapfrog", 2.0}, {"leapfrog", 0.02}};
+  REQUIRE_THROWS_WITH(validate(p), Catch::Contains("h = 2"));
+}

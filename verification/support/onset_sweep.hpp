@@ -58,6 +58,7 @@
 #include "parallel/distributed_network.hpp"
 #include "spectral/perron.hpp"
 #include "support/onset_grid.hpp"
+#include "support/pipeline_step.hpp"
 #include "support/sample_statistics.hpp"
 #include "theory/growth_rate.hpp"
 #include "theory/self_consistent.hpp"
@@ -68,12 +69,16 @@ namespace hmfnet::verification {
 constexpr double kEquilibrationEfolds = 15.0;
 
 struct SweepProtocol {
-  std::vector<double> x;   ///< K / K_c, increasing, x[0] = 0 (the floor R0)
-  double h = 0.01;         ///< leap-frog step
-  double duration = 1000;  ///< T2 per segment
-  double transient = 500;  ///< T1 per segment
-  int max_segments = 4;    ///< repeated segments allowed per grid point (>= 1)
-  int replicas = 3;        ///< initial-condition seeds 1..B (times seed_base)
+  std::vector<double> x;  ///< K / K_c, increasing, x[0] = 0 (the floor R0)
+  double h = 0.01;        ///< leap-frog step (unless pipeline_steps)
+  /// Per grid point the method of support/pipeline_step.hpp (the paper-scale work-precision
+  /// choice for that x and sigma0) instead of leap-frog with h.
+  bool pipeline_steps = false;
+  SceneFamily family = SceneFamily::erdos_renyi;  ///< the scene of pipeline_step
+  double duration = 1000;                         ///< T2 per segment
+  double transient = 500;                         ///< T1 per segment
+  int max_segments = 4;  ///< repeated segments allowed per grid point (>= 1)
+  int replicas = 3;      ///< initial-condition seeds 1..B (times seed_base)
   std::uint64_t seed_base = 1000;
   double omega = 6.0;
 };
@@ -195,6 +200,10 @@ inline void run_sweep(OnsetCurve& c, const DistributedNetwork& distributed, cons
     c.K.push_back(v * c.Kc);
     c.segments.push_back(m);
     p.K.insert(p.K.end(), static_cast<std::size_t>(m), v * c.Kc);
+    if (protocol.pipeline_steps)
+      p.steps.insert(
+          p.steps.end(), static_cast<std::size_t>(m),
+          pipeline_step(v, c.sigma0, protocol.duration, protocol.transient, protocol.family));
   }
   c.time_units += static_cast<double>(p.K.size()) * protocol.duration;
   p.h = protocol.h;
