@@ -44,6 +44,7 @@
 #include "parallel/parallel_session.hpp"
 #include "spectral/perron.hpp"
 #include "support/claim_check.hpp"
+#include "support/work_account.hpp"
 #include "theory/bessel_ratio.hpp"
 #include "theory/critical_coupling.hpp"
 #include "theory/self_consistent.hpp"
@@ -63,7 +64,7 @@ struct Run {
 };
 
 // One run at K = 3 K_c from the incoherent state with node statistics.
-Run locked_run(const Network& net, double t1, double t2) {
+Run locked_run(ClaimCheck& check, const Network& net, double t1, double t2) {
   const DistributedNetwork d(net);
   const PerronResult perron = perron_eigenpair(d);
   SimulationParameters p;
@@ -76,6 +77,7 @@ Run locked_run(const Network& net, double t1, double t2) {
   p.node_data = true;
   NetworkForce force(d);
   const SimulationResult sim = simulate(d, net.degrees(), force, p);
+  verification::account(check, p, sim);
   return {sim.points.front(), p.K[0], perron.lambda, perron.u};
 }
 
@@ -198,14 +200,14 @@ int main(int argc, char** argv) {
   const NodeIndex n = full ? 10000 : 2000;
   const double t1 = full ? 500.0 : 200.0, t2 = full ? 2500.0 : 600.0;
   const Network net = erdos_renyi({n, erdos_renyi_probability(n, 100.0), 3});
-  const Run run = locked_run(net, t1, t2);
+  const Run run = locked_run(check, net, t1, t2);
   std::printf("  INFO  ER N = %lld, K = %.4g (3 K_c), frame Omega = %.6f, P/N = %.6f\n",
               static_cast<long long>(n), run.K, run.point.frame[0], run.point.frame[2]);
   check_frequencies(check, run, t2 - t1);
   check_fluctuations(check, run);
   // Step 2: the phase histogram on the paper's N = 10^3, q = 0.01 network.
   const Network small = erdos_renyi({1000, 0.01, 3});
-  const Run hist = locked_run(small, 200.0, 2200.0);
+  const Run hist = locked_run(check, small, 200.0, 2200.0);
   check_phase_histogram(check, small, hist);
   check.data("constants", {run.point.frame[0], t1, t2, run.K});
   return check.exit_code();

@@ -53,6 +53,7 @@
 #include "parallel/parallel_session.hpp"
 #include "spectral/perron.hpp"
 #include "support/claim_check.hpp"
+#include "support/work_account.hpp"
 #include "theory/bessel_ratio.hpp"
 #include "theory/critical_coupling.hpp"
 #include "theory/self_consistent.hpp"
@@ -273,6 +274,7 @@ int main(int argc, char** argv) {
   const SimulationParameters p = run_parameters(K, t1, t2);
   NetworkForce force(d);
   const SimulationResult sim = simulate(d, net.degrees(), force, p);
+  verification::account(check, p, sim);
   const PointResult& point = sim.points.front();
   const double n = static_cast<double>(net.size());
   double max_R = 0.0;

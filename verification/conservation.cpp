@@ -22,6 +22,7 @@
 #include "parallel/parallel_session.hpp"
 #include "spectral/perron.hpp"
 #include "support/claim_check.hpp"
+#include "support/work_account.hpp"
 #include "theory/critical_coupling.hpp"
 
 using namespace hmfnet;
@@ -48,6 +49,7 @@ int main(int argc, char** argv) {
     p.record_stride = 10;
     NetworkForce force(d);
     const SimulationResult r = simulate(d, net.degrees(), force, p);
+    verification::account(check, p, r);
     // Step 3: energy relative to H at the start of the whole run, per half.
     const double e0 = r.series.energy.front();
     double first = 0.0, second = 0.0;

@@ -35,6 +35,7 @@
 #include "parallel/parallel_session.hpp"
 #include "spectral/perron.hpp"
 #include "support/claim_check.hpp"
+#include "support/work_account.hpp"
 #include "support/pipeline_step.hpp"
 #include "support/sample_statistics.hpp"
 #include "theory/critical_coupling.hpp"
@@ -55,7 +56,7 @@ struct Scale {
 };
 
 // Step 2: <R>_t at K = K_c / 2 on one network, replica mean and its error.
-Floor floor_at_half_kc(NodeIndex n, double q, std::uint64_t seed, const Scale& s) {
+Floor floor_at_half_kc(ClaimCheck& check, NodeIndex n, double q, std::uint64_t seed, const Scale& s) {
   const Network net = erdos_renyi({n, q, seed});
   const DistributedNetwork distributed(net);
   const double lambda = perron_eigenpair(distributed).lambda;
@@ -70,7 +71,9 @@ Floor floor_at_half_kc(NodeIndex n, double q, std::uint64_t seed, const Scale& s
     p.replicas.push_back({6.0, 0.35, 100 * seed + static_cast<std::uint64_t>(b)});
   p.record_stride = 1000;
   NetworkForce force(distributed);
-  const PointResult point = simulate(distributed, net.degrees(), force, p).points.front();
+  const SimulationResult result = simulate(distributed, net.degrees(), force, p);
+  verification::account(check, p, result);
+  const PointResult& point = result.points.front();
   const verification::MeanSd m = verification::mean_sd(point.R_mean);
   double sem2 = 0.0;
   for (const double e : point.R_sem) sem2 += e * e;
@@ -140,9 +143,9 @@ int main(int argc, char** argv) {
   const NodeIndex n_fixed = full ? 10000 : 2000;
   std::vector<Floor> vs_n, vs_q;
   for (std::size_t k = 0; k < sizes.size(); ++k)
-    vs_n.push_back(floor_at_half_kc(static_cast<NodeIndex>(sizes[k]), 0.01, k + 1, s));
+    vs_n.push_back(floor_at_half_kc(check, static_cast<NodeIndex>(sizes[k]), 0.01, k + 1, s));
   for (std::size_t k = 0; k < qs.size(); ++k)
-    vs_q.push_back(floor_at_half_kc(n_fixed, qs[k], 20 + k, s));
+    vs_q.push_back(floor_at_half_kc(check, n_fixed, qs[k], 20 + k, s));
   // Step 3: the slopes.
   check_slope(check, "vs N", sizes, vs_n);
   check_slope(check, "vs q", qs, vs_q);

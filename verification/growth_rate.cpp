@@ -45,6 +45,7 @@
 #include "parallel/parallel_session.hpp"
 #include "spectral/perron.hpp"
 #include "support/claim_check.hpp"
+#include "support/work_account.hpp"
 #include "support/sample_statistics.hpp"
 #include "theory/critical_coupling.hpp"
 #include "theory/dispersion_relation.hpp"
@@ -136,6 +137,7 @@ KResult run_one_k(ClaimCheck& check, const Network& net, const DistributedNetwor
   p.record_stride = 1;
   NetworkForce force(d);
   const SimulationResult sim = simulate(d, net.degrees(), force, p);
+  verification::account(check, p, sim);
   const auto B = static_cast<std::size_t>(replicas);
   const std::size_t records = sim.series.t.size();
   std::vector<double> slopes, table(records * (B + 1));

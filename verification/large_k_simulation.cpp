@@ -67,6 +67,7 @@
 #include "parallel/parallel_session.hpp"
 #include "spectral/perron.hpp"
 #include "support/claim_check.hpp"
+#include "support/work_account.hpp"
 #include "theory/critical_coupling.hpp"
 #include "theory/large_k_limit.hpp"
 #include "theory/self_consistent.hpp"
@@ -95,7 +96,7 @@ struct Sample {
 };
 
 // One run at coupling K from the incoherent state; the theory at each replica's E and P.
-Sample simulate_at(const Network& net, const DistributedNetwork& d, const PerronResult& perron,
+Sample simulate_at(ClaimCheck& check, const Network& net, const DistributedNetwork& d, const PerronResult& perron,
                    double K, double h, double duration, double transient, int replicas) {
   SimulationParameters p;
   p.h = h;
@@ -109,6 +110,7 @@ Sample simulate_at(const Network& net, const DistributedNetwork& d, const Perron
   p.record_stride = 100;
   NetworkForce force(d);
   const SimulationResult sim = simulate(d, net.degrees(), force, p);
+  verification::account(check, p, sim);
   const PointResult& pt = sim.points.front();
   const auto B = static_cast<std::size_t>(replicas);
   const double n = static_cast<double>(net.size());
@@ -138,7 +140,7 @@ struct AlphaResult {
 };
 
 // Steps 2-4 for one alpha: the network, the references and the simulation.
-AlphaResult run_alpha(double alpha, const Scale& sc) {
+AlphaResult run_alpha(ClaimCheck& check, double alpha, const Scale& sc) {
   const double d_min = power_law_d_min_for_mean(alpha, 100.0);
   const Network net =
       chung_lu(power_law_targets(sc.n, {alpha, d_min, sc.n - 1.0}, 1), LinkProbability::capped, 1);
@@ -161,7 +163,7 @@ AlphaResult run_alpha(double alpha, const Scale& sc) {
   for (const double dn : net.degrees()) floor_sum += kSqrtPi * std::sqrt(dn) / 2.0;
   a.R_floor = floor_sum / (n * mean_degree(net));
   a.converged = limit.status == SolveStatus::converged && sol.status == SolveStatus::converged;
-  a.sim = simulate_at(net, d, perron, a.K, sc.h, sc.duration, sc.transient, sc.replicas);
+  a.sim = simulate_at(check, net, d, perron, a.K, sc.h, sc.duration, sc.transient, sc.replicas);
   a.converged = a.converged && a.sim.converged;
   std::printf(
       "  INFO  alpha %.1f: lambda %.1f, K %.0f, K_c %.3f, K/K_c %.0f, h omega_max %.3f; <R>_t "
@@ -229,7 +231,7 @@ int main(int argc, char** argv) {
   bool converged = true;
   double budget = 0.0;
   for (const double alpha : alphas) {
-    results.push_back(run_alpha(alpha, sc));
+    results.push_back(run_alpha(check, alpha, sc));
     const AlphaResult& a = results.back();
     converged = converged && a.converged;
     check_gap(check, a);
@@ -284,9 +286,9 @@ int main(int argc, char** argv) {
     const double K = results[0].K;
     const Sample coarse = sc.halving_duration == sc.duration
                               ? results[0].sim
-                              : simulate_at(net, d, perron, K, sc.h, sc.halving_duration,
+                              : simulate_at(check, net, d, perron, K, sc.h, sc.halving_duration,
                                             sc.halving_transient, sc.replicas);
-    const Sample fine = simulate_at(net, d, perron, K, sc.h / 2.0, sc.halving_duration,
+    const Sample fine = simulate_at(check, net, d, perron, K, sc.h / 2.0, sc.halving_duration,
                                     sc.halving_transient, sc.replicas);
     const double sem = std::hypot(coarse.sem, fine.sem);
     std::printf("  INFO  alpha %.1f: <R>_t %.4f +- %.4f (h), %.4f +- %.4f (h/2)\n", alpha,

@@ -51,6 +51,7 @@
 #include "parallel/parallel_session.hpp"
 #include "spectral/perron.hpp"
 #include "support/claim_check.hpp"
+#include "support/work_account.hpp"
 #include "support/pipeline_step.hpp"
 #include "support/run_variance.hpp"
 #include "theory/critical_coupling.hpp"
@@ -212,6 +213,7 @@ void check_panel(ClaimCheck& check, const Panel& panel, const Scale& sc) {
   p.continue_state = false;
   NetworkForce force(d);
   const SimulationResult sim = simulate(d, panel.net.degrees(), force, p);
+  verification::account(check, p, sim);
   std::printf("  INFO  %s: lambda %.2f, K_c %.4g, G %.3f; %.0f s of integration\n",
               panel.name.c_str(), perron.lambda, Kc, G, sim.integration_seconds);
 

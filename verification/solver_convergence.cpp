@@ -18,7 +18,10 @@
 //   solver used to return the unstable solution with one community incoherent (R = 0.282 instead of
 //   0.444 at 2 K_c: the Perron vector vanishes on the other community and r = 0 there is a fixed
 //   point); it now starts every community above its own threshold (theory/self_consistent.cpp) and
-//   the check below compares with the plain iteration from the same start.
+//   the check below compares with the plain iteration from the same start. Found at full scale
+//   (lambda_c 3e-4 apart): at K between the two components' thresholds the accelerated solver
+//   stalled at residual 1e-4 (1000 evaluations) because the incoherent component's nodes were
+//   log unknowns at the smallest double; they are no longer unknowns (self_consistent_map.cpp).
 // Networks: ER and capped Chung-Lu SF (alpha 2.8) with ||d|| = 50 (ci, N = 2000) or 100 (full,
 //   N = 10^4); two-block SBMs (network/stochastic_block.hpp) with 2 x 1000 (ci) or 2 x 5000
 //   (full) nodes: near-degenerate (p_out = p_in / 25: lambda / lambda_2 ~ 1.08), disconnected

@@ -44,6 +44,7 @@
 #include "spectral/network_summary.hpp"
 #include "spectral/perron.hpp"
 #include "support/claim_check.hpp"
+#include "support/work_account.hpp"
 #include "support/run_variance.hpp"
 #include "theory/critical_coupling.hpp"
 #include "theory/self_consistent.hpp"
@@ -113,6 +114,7 @@ std::vector<double> measure_gap(ClaimCheck& check, const Case& c, const Distribu
   p.continue_state = false;
   NetworkForce force(d);
   const SimulationResult sim = simulate(d, c.net.degrees(), force, p);
+  verification::account(check, p, sim);
   const double n = static_cast<double>(c.net.size());
   const auto B = static_cast<std::size_t>(sc.replicas);
   std::vector<double> rows;

@@ -84,17 +84,38 @@ double relative_residual(const std::vector<double>& r, const std::vector<double>
 // k_max_log_step (a factor e^0.5 = 1.65), a trust region that keeps a poor first guess from being
 // extrapolated far towards r = 0: on a star with a degree-shaped guess near onset, unlimited steps
 // ended there (tests/theory/test_self_consistent.cpp), with 0.5 it converges in <= 46 steps.
-// Nodes without neighbours have r_n = 0 exactly and are not unknowns; an r_n that underflows
-// (a component decaying to 0, e.g. on a disconnected network) is held at the smallest normal
-// double so that its logarithm stays finite.
+// Nodes without neighbours have r_n = 0 exactly and are not unknowns, nor are the nodes of a
+// component the guess starts at r = 0 (an incoherent component of a disconnected network, a fixed
+// point of the map; self_consistent.cpp): as unknowns they would sit at the smallest normal
+// double and drift there by the log of their linear growth factor, 1 - K lambda_c / (2 N mu)
+// per iteration, a residual that Anderson's secant model cannot cancel (found at N = 10^4, where
+// two components' lambda_c differ by 3e-4: 1000 iterations stalled at residual 1e-4). An r_n
+// that underflows during the iteration is held at the smallest normal double so that its
+// logarithm stays finite.
 constexpr double k_max_log_step = 0.5;
+
+// A node the guess puts at r = 0 stays there (it is not an unknown), which is a fixed point only
+// if all its neighbours are 0 too, i.e. the zeros form whole components.
+void require_closed_zero_set(const Network& network, const std::vector<double>& r) {
+  for (NodeIndex i = 0; i < network.size(); ++i) {
+    if (r[static_cast<std::size_t>(i)] != 0.0) continue;
+    for (EdgeOffset k = network.row_begin(i); k < network.row_end(i); ++k) {
+      if (r[static_cast<std::size_t>(network.col(k))] != 0.0) {
+        throw std::invalid_argument("self-consistent map: the guess is 0 at node " +
+                                    std::to_string(i) + " but not at its neighbour " +
+                                    std::to_string(network.col(k)) +
+                                    " (zeros must cover whole components)");
+      }
+    }
+  }
+}
 
 class LogVariables {
  public:
-  explicit LogVariables(const Network& network) {
+  LogVariables(const Network& network, const std::vector<double>& guess) {
     const std::vector<double> d = network.degrees();
     for (std::size_t i = 0; i < d.size(); ++i) {
-      if (d[i] > 0.0) m_active.push_back(i);
+      if (d[i] > 0.0 && guess[i] > 0.0) m_active.push_back(i);
     }
   }
   std::size_t size() const { return m_active.size() + 1; }
@@ -124,7 +145,8 @@ MapFixedPoint iterate_self_consistent_map(const SelfConsistentMap& map, std::vec
   if (!(eta > 0.0) || !std::isfinite(eta)) {
     throw std::invalid_argument("self-consistent map: guess needs 0 < eta < inf");
   }
-  const LogVariables variables(map.network());
+  require_closed_zero_set(map.network(), r);
+  const LogVariables variables(map.network(), r);
   std::vector<double> r_in(n, 0.0), r_out(n, 0.0);
   const FixedPointMap log_map = [&](const std::vector<double>& x, std::vector<double>& gx) {
     const double eta_in = variables.unpack(x, r_in);

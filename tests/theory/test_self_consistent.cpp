@@ -11,6 +11,8 @@
 #include "network/degree_statistics.hpp"
 #include "network/erdos_renyi.hpp"
 #include "network/stochastic_block.hpp"
+#include "network/structure.hpp"
+#include "spectral/component_radii.hpp"
 #include "spectral/dense_spectrum.hpp"
 #include "support/small_networks.hpp"
 #include "support/theory_support.hpp"
@@ -19,6 +21,7 @@
 #include "theory/bessel_ratio.hpp"
 #include "theory/onset_amplitude.hpp"
 #include "theory/self_consistent.hpp"
+#include "theory/self_consistent_map.hpp"
 
 using namespace hmfnet;
 using Catch::Matchers::WithinAbs;
@@ -353,6 +356,46 @@ TEST_CASE(
   REQUIRE(test::equation_residual(net, K, 1.0, 0.0, s.r, s.sigma2) < 1e-10);
   // Both communities are above their thresholds at the solution's variance: the stable solution.
   REQUIRE(K * lambda_b / (2.0 * net.size() * s.sigma2) > 1.0);
+}
+
+TEST_CASE(
+    "A component started incoherent is not an unknown: the accelerated solve converges between "
+    "two close component thresholds [two ER communities 2 x 3000]",
+    "[theory]") {
+  // Bug found by verification/solver_convergence.cpp at N = 10^4 (thresholds 3e-4 apart): the
+  // incoherent component's log r sat at the smallest double and drifted by ln(K lambda_b / 2 N
+  // mu) per iteration, which stalled Anderson at residual 1e-4 for 1000 iterations.
+  // The reproducer: two ER communities of 3000 nodes, <d> = 60, whose lambda_c differ by 2.7e-4
+  // (seed 1); before the fix every K between the thresholds failed after 1000 evaluations.
+  const Network net = two_block_sbm({3000, 60.0 / 2999.0, 0.0, 1});
+  const ComponentRadii radii = component_radii(net, connected_components(net));
+  REQUIRE(radii.converged);
+  const double lambda = std::max(radii.lambda[0], radii.lambda[1]),
+               lambda_b = std::min(radii.lambda[0], radii.lambda[1]);
+  REQUIRE(lambda / lambda_b - 1.0 < 1e-3);  // the close thresholds this test is about
+  const SelfConsistentSystem system(net, lambda, 1.0);
+  for (const double fraction : {0.9, 0.5, 0.1}) {  // K between the thresholds, near the lower
+    const double x = 1.0 + fraction * (lambda / lambda_b - 1.0);
+    const double K = coupling(x, 1.0, net, lambda);
+    SelfConsistentOptions fast = tight();
+    fast.max_iterations = 1000;
+    const SelfConsistentSolution s = system.solve(K, fast);
+    INFO("K/K_c = " << x << ": " << s.message << ", " << s.iterations << " evaluations");
+    REQUIRE(s.status == SolveStatus::converged);
+    REQUIRE(s.iterations < 200);
+    REQUIRE(test::equation_residual(net, K, 1.0, 0.0, s.r, s.sigma2) < 1e-10);
+    // The weaker community stays incoherent, and is below its threshold at the solution.
+    REQUIRE(K * lambda_b / (2.0 * net.size() * s.sigma2) < 1.0);
+  }
+}
+
+TEST_CASE("The map refuses a guess whose zeros do not cover whole components", "[theory]") {
+  const Network net = test::two_cliques(20, 60);
+  std::vector<double> r(80, 0.1);
+  r[30] = 0.0;  // inside K_60, beside coherent neighbours
+  const SelfConsistentMap map(net, 1.0 / coupling(1.2, 1.0, net, 59.0));
+  REQUIRE_THROWS_WITH(iterate_self_consistent_map(map, r, 1.0, tight()),
+                      Catch::Contains("node 30"));
 }
 
 TEST_CASE(

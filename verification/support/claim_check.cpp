@@ -136,8 +136,18 @@ void ClaimCheck::note(const std::string& name, std::string value) {
   m_notes.emplace_back(name, std::move(value));
 }
 
+void ClaimCheck::account(double simulated_time, double evaluations) {
+  m_evaluations += evaluations;
+  m_paper_evaluations += simulated_time / 0.01;
+}
+
 int ClaimCheck::exit_code() {
   const double wall = now_seconds() - m_start;
+  if (m_evaluations > 0.0) {
+    std::printf("  INFO  work: %.4g force evaluations; leap-frog h = 0.01 over the same simulated "
+                "time: %.4g (%.3gx)\n",
+                m_evaluations, m_paper_evaluations, m_paper_evaluations / m_evaluations);
+  }
   std::printf("%s: %d check(s) failed (%.1f s)\n", m_failed == 0 ? "VERIFIED" : "NOT VERIFIED",
               m_failed, wall);
   if (!m_options.output.empty()) write_output(wall);
@@ -170,6 +180,8 @@ void ClaimCheck::write_output(double wall_seconds) const {
     file.set_attribute(root, "hmfnet_version", std::string(k_version));
     file.set_attribute(root, "git_commit", std::string(k_git_commit));
     file.set_attribute(root, "wall_seconds", wall_seconds);
+    file.set_attribute(root, "force_evaluations", m_evaluations);
+    file.set_attribute(root, "paper_evaluations", m_paper_evaluations);
     const H5Id group = file.create_group("data");
     for (const Series& s : m_series) {
       if (s.cols == 0) {

@@ -47,6 +47,11 @@ class ClaimCheck {
   /// A string attribute of /data (labels, JSON descriptions of the series).
   void note(const std::string& name, std::string value);
 
+  /// Adds one simulation's cost: its force evaluations, and those the paper's leap-frog h = 0.01
+  /// would have spent on the same simulated time (one pass integrates all replicas). Written as
+  /// root attributes force_evaluations and paper_evaluations (support/work_account.hpp).
+  void account(double simulated_time, double evaluations);
+
   /// Prints the verdict, writes --output (atomically) and returns the exit code.
   int exit_code();
 
@@ -77,6 +82,7 @@ class ClaimCheck {
   std::vector<std::pair<std::string, std::string>> m_notes;
   int m_failed = 0;
   double m_start;
+  double m_evaluations = 0.0, m_paper_evaluations = 0.0;
 };
 
 }  // namespace hmfnet::verification

@@ -28,6 +28,7 @@ inline double range(const std::vector<double>& v) {
 inline OnsetCurve check_onset(ClaimCheck& check, const std::string& name, const Network& net,
                               double sigma0, const SweepProtocol& p) {
   OnsetCurve c = measure_onset(net, sigma0, p);
+  check.account(c.time_units, c.evaluations);
   std::string grid;
   for (std::size_t k = 0; k < c.x.size(); ++k) {
     char cell[32];

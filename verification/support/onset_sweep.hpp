@@ -96,6 +96,7 @@ struct OnsetCurve {
   double x_on_theory = NAN;           ///< the same fit on the theory curve
   int points = 0;                     ///< grid points in the fit
   double time_units = 0.0;            ///< simulated time per replica
+  double evaluations = 0.0;           ///< force evaluations (each covers all replicas)
   /// Refined grids: largest |<R>| difference between the two sweeps on the points before the
   /// first midpoint (same seeds, same K sequence: must be 0); NaN when not refined.
   double prefix_repeat = NAN;
@@ -217,6 +218,7 @@ inline void run_sweep(OnsetCurve& c, const DistributedNetwork& distributed, cons
   p.record_stride = 1000;
   NetworkForce force(distributed);
   const SimulationResult r = simulate(distributed, net.degrees(), force, p);
+  c.evaluations += static_cast<double>(r.force_evaluations);
   std::size_t segment = 0;
   for (std::size_t k = first_point; k < c.x.size(); ++k) {
     const int m = static_cast<int>(c.segments[k]);
@@ -250,6 +252,7 @@ inline OnsetCurve refined_sweep(const OnsetCurve& first, const DistributedNetwor
   OnsetCurve c;
   c.lambda = first.lambda, c.Kc = first.Kc, c.sigma0 = first.sigma0;
   c.time_units = first.time_units;
+  c.evaluations = first.evaluations;
   run_sweep(c, distributed, net, refined_prefix(first.x, added), protocol);
   double repeat = 0.0;
   for (std::size_t k = 0; k < first.x.size() && first.x[k] < added.front(); ++k)
