@@ -156,6 +156,22 @@ NetworkForce::NetworkForce(const DistributedNetwork& network, ForcePrecision pre
   if (m_precision == ForcePrecision::float32) narrow(m_adjacency.weights, m_weights_f32);
 }
 
+template <typename T>
+void NetworkForce::run_rows(const T* weights, const T* column_cs, NodeIndex rows, int replicas,
+                            std::vector<double>& g) {
+  const RowKernelArgs<T> args{m_adjacency.row_ptr.data(),
+                              m_adjacency.cols.data(),
+                              weights,
+                              column_cs,
+                              m_owned_cs.data(),
+                              m_inverse_n,
+                              g.data(),
+                              m_y.data(),
+                              m_abs_y.data(),
+                              m_coupling.data()};
+  run_kernel(args, rows, replicas);
+}
+
 void NetworkForce::evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) {
   const int nb = state.replicas;
   const std::size_t cells = static_cast<std::size_t>(state.rows) * static_cast<std::size_t>(nb);
@@ -177,33 +193,14 @@ void NetworkForce::evaluate(const RotorState& state, std::vector<double>& g, For
   m_coupling.resize(cells);
   if (nb > 64) throw std::invalid_argument("at most 64 replicas per pass");
   if (m_precision == ForcePrecision::float64) {
-    const RowKernelArgs<double> args{
-        m_adjacency.row_ptr.data(),
-        m_adjacency.cols.data(),
-        m_adjacency.weights.empty() ? nullptr : m_adjacency.weights.data(),
-        column_cs,
-        m_owned_cs.data(),
-        m_inverse_n,
-        g.data(),
-        m_y.data(),
-        m_abs_y.data(),
-        m_coupling.data()};
-    run_kernel(args, state.rows, nb);
+    run_rows(m_adjacency.weights.empty() ? nullptr : m_adjacency.weights.data(), column_cs,
+             state.rows, nb, g);
   } else {
     // The gathered table in float32 (one narrowing pass over the columns, O(columns x B), next
     // to the O(nnz x B) gather it halves).
     narrow(m_identity_import ? m_owned_cs : m_column_cs, m_column_f32);
-    const RowKernelArgs<float> args{m_adjacency.row_ptr.data(),
-                                    m_adjacency.cols.data(),
-                                    m_weights_f32.empty() ? nullptr : m_weights_f32.data(),
-                                    m_column_f32.data(),
-                                    m_owned_cs.data(),
-                                    m_inverse_n,
-                                    g.data(),
-                                    m_y.data(),
-                                    m_abs_y.data(),
-                                    m_coupling.data()};
-    run_kernel(args, state.rows, nb);
+    run_rows(m_weights_f32.empty() ? nullptr : m_weights_f32.data(), m_column_f32.data(),
+             state.rows, nb, g);
   }
   ordered_column_sums(m_abs_y, static_cast<std::size_t>(state.rows), nb, sums.order);
   ordered_column_sums(m_coupling, static_cast<std::size_t>(state.rows), nb, sums.coupling);

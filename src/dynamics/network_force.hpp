@@ -36,6 +36,11 @@ class NetworkForce : public CouplingForce {
   const std::vector<double>& local_fields() const override { return m_y; }
 
  private:
+  /// The row kernel in precision T over the weights (nullptr: 0/1) and gathered table in T.
+  template <typename T>
+  void run_rows(const T* weights, const T* column_cs, NodeIndex rows, int replicas,
+                std::vector<double>& g);
+
   const DistributedNetwork& m_network;
   DistributedNetwork::LocalAdjacency m_adjacency;
   double m_inverse_n;
