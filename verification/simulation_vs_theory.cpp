@@ -130,11 +130,12 @@ struct Halves {
 
 Halves half_means(const SimulationResult& sim, const SimulationParameters& p, std::size_t k) {
   const std::size_t B = p.replicas.size();
+  const double step = step_at(p, k).h;  // this K's step (per-K steps at full scale)
   std::vector<double> R;  // replica-mean R of the records of this K inside [T1, T2]
   std::size_t j = 0;
   for (std::size_t i = 0; i < sim.series.K.size(); ++i) {
     if (sim.series.K[i] != p.K[k]) continue;
-    const double t = static_cast<double>(++j * static_cast<std::size_t>(p.record_stride)) * p.h;
+    const double t = static_cast<double>(++j * static_cast<std::size_t>(p.record_stride)) * step;
     if (t <= p.transient) continue;
     double mean = 0.0;
     for (std::size_t b = 0; b < B; ++b) mean += sim.series.R[i * B + b] / static_cast<double>(B);
