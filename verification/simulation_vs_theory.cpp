@@ -51,9 +51,9 @@
 #include "parallel/parallel_session.hpp"
 #include "spectral/perron.hpp"
 #include "support/claim_check.hpp"
-#include "support/work_account.hpp"
 #include "support/pipeline_step.hpp"
 #include "support/run_variance.hpp"
+#include "support/work_account.hpp"
 #include "theory/critical_coupling.hpp"
 #include "theory/onset_amplitude.hpp"
 #include "theory/self_consistent.hpp"
@@ -131,7 +131,7 @@ struct Halves {
 Halves half_means(const SimulationResult& sim, const SimulationParameters& p, std::size_t k) {
   const std::size_t B = p.replicas.size();
   const double step = step_at(p, k).h;  // this K's step (per-K steps at full scale)
-  std::vector<double> R;  // replica-mean R of the records of this K inside [T1, T2]
+  std::vector<double> R;                // replica-mean R of the records of this K inside [T1, T2]
   std::size_t j = 0;
   for (std::size_t i = 0; i < sim.series.K.size(); ++i) {
     if (sim.series.K[i] != p.K[k]) continue;
