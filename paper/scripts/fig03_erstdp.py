@@ -2,7 +2,8 @@
 
 Reads onset_sigma0.h5 (verification/onset_sigma0.cpp). Error bars: the larger of the replica
 spread and the batch-means SEM of the time average, over sqrt(replicas). Dashed: the
-self-consistent theory (eq:rSigmaBesselMain); thin vertical lines: the measured onsets; dotted:
+self-consistent theory (eq:rSigmaBesselMain); dotted: the same theory at the sweep's own energy
+and momentum at each K (onset_sweep.hpp); thin vertical lines: the measured onsets; dotted:
 K_c / sigma0^2 = 2 N / lambda (eq:criticalKFirstOrder).
 """
 import matplotlib.pyplot as plt
@@ -15,6 +16,7 @@ r = hmfdata.load(args.data, "onset_sigma0")
 protocol = r.note_json("protocol")
 K, R, err = r.series("er_K"), r.series("er_R"), r.series("er_R_err")
 theory, lam, x_on = r.series("er_R_theory"), r.series("er_lambda"), r.series("er_x_on")
+theory_ep = r.data.get("er_R_theory_ep")  # the theory at the sweep's own (E, P), dotted
 sigma0 = r.series("er_sigma0")
 labels = r.note_json("er_labels")
 ref = 2 * protocol["N"] / lam[0]  # K_c / sigma0^2
@@ -26,6 +28,8 @@ for i, label in enumerate(labels):
     a.errorbar(K[i], R[i], yerr=err[i], fmt="o-", ms=3, lw=0.8, color=color, label=label)
     b.errorbar(K[i] / s2, R[i], yerr=err[i], fmt="o-", ms=3, lw=0.8, color=color, label=label)
     b.plot(K[i] / s2, theory[i], "--", lw=0.7, color=color)
+    if theory_ep is not None:
+        b.plot(K[i] / s2, theory_ep[i], ":", lw=0.9, color=color)
     b.axvline(x_on[i] * ref, color=color, lw=0.5, alpha=0.6)
 b.axvline(ref, color="k", lw=0.8, ls=":", label="$K_c/\\sigma_0^2 = 2N/\\lambda$")
 a.set(xlabel="$K$", ylabel="$\\langle R\\rangle_t$", title="(a) vs $K$")

@@ -41,8 +41,10 @@ inline OnsetCurve check_onset(ClaimCheck& check, const std::string& name, const 
       "  INFO  %s: lambda %.2f, K_c %.4g, R0 %.4f, %g time units; x:<R> (xm: m segments, "
       "e: equilibrated, *: fitted)%s\n",
       name.c_str(), c.lambda, c.Kc, c.R0, c.time_units, grid.c_str());
-  std::printf("  INFO  %s: x_on %.3f +- %.3f (%d points), same rule on theory %.3f\n", name.c_str(),
-              c.x_on, c.x_on_err, c.points, c.x_on_theory);
+  std::printf(
+      "  INFO  %s: x_on %.3f +- %.3f (%d points), same rule on theory %.3f, on the theory at the "
+      "sweep's (E, P) %.3f\n",
+      name.c_str(), c.x_on, c.x_on_err, c.points, c.x_on_theory, c.x_on_theory_ep);
   if (!std::isnan(c.prefix_repeat)) {
     check.holds(name + ": refined sweep repeats the first sweep up to the first midpoint",
                 c.prefix_repeat == 0.0,
@@ -63,6 +65,9 @@ inline OnsetCurve check_onset(ClaimCheck& check, const std::string& name, const 
   check.report(name + ": onset vs the same rule on the equilibrium theory", c.x_on, c.x_on_theory,
                "(not reproduced near onset: the simulated R^2 is straighter, see "
                "onset_checks.hpp)");
+  check.report(name + ": onset vs the same rule on the theory at the sweep's own (E, P)", c.x_on,
+               c.x_on_theory_ep,
+               "(the energy path of the sweep removed: what is left is the dynamics' lag)");
   return c;
 }
 
@@ -119,22 +124,25 @@ inline void add_onset_figure_data(ClaimCheck& check, const std::string& prefix,
   check.data(prefix + "_R", stack(curves, &OnsetCurve::R), rows, cols);
   check.data(prefix + "_R_err", stack(curves, &OnsetCurve::R_err), rows, cols);
   check.data(prefix + "_R_theory", stack(curves, &OnsetCurve::R_theory), rows, cols);
+  check.data(prefix + "_R_theory_ep", stack(curves, &OnsetCurve::R_theory_ep), rows, cols);
   check.data(prefix + "_segments", stack(curves, &OnsetCurve::segments), rows, cols);
   check.data(prefix + "_equilibrated", stack(curves, &OnsetCurve::equilibrated), rows, cols);
   check.data(prefix + "_fitted", stack(curves, &OnsetCurve::fitted), rows, cols);
-  std::vector<double> lambda, sigma0, x_on, x_on_err, x_th;
+  std::vector<double> lambda, sigma0, x_on, x_on_err, x_th, x_th_ep;
   for (const OnsetCurve& c : curves) {
     lambda.push_back(c.lambda);
     sigma0.push_back(c.sigma0);
     x_on.push_back(c.x_on);
     x_on_err.push_back(c.x_on_err);
     x_th.push_back(c.x_on_theory);
+    x_th_ep.push_back(c.x_on_theory_ep);
   }
   check.data(prefix + "_lambda", lambda);
   check.data(prefix + "_sigma0", sigma0);
   check.data(prefix + "_x_on", x_on);
   check.data(prefix + "_x_on_err", x_on_err);
   check.data(prefix + "_x_on_theory", x_th);
+  check.data(prefix + "_x_on_theory_ep", x_th_ep);
   check.note(prefix + "_labels", labels);
 }
 

@@ -41,6 +41,10 @@
 //   same network, R = 0 below K_c, no floor) goes through the same fit on the same points with the
 //   same weights: x_on(theory) is where the rule puts the onset of a system that follows the theory
 //   exactly, so x_on - x_on(theory) is free of the rule's curvature bias x_on(theory) - 1.
+//   The same fit on the theory at the sweep's own energy and momentum (theory_at_sweep_state)
+//   separates the sweep's energy path from the dynamics: at ci scale (onset_rewired, N = 1000)
+//   it moves x_on(theory) from 0.86-0.91 to 0.90-0.95 against the simulated 0.97-1.12, so the
+//   energy path explains 0.03-0.04 of the 0.06-0.26 gap; at x = 3 it raises the theory by ~7%.
 // Errors: a point's error is the larger of the replica spread sd / sqrt(B) and the batch-means
 //   SEM of the time average / sqrt(B) (both of the mean over its qualifying segments);
 //   dE^2 = 2 R dR. The standard error of x_on follows from the covariance of the fitted line
@@ -59,6 +63,7 @@
 #include "spectral/perron.hpp"
 #include "support/onset_grid.hpp"
 #include "support/pipeline_step.hpp"
+#include "support/run_variance.hpp"
 #include "support/sample_statistics.hpp"
 #include "theory/growth_rate.hpp"
 #include "theory/self_consistent.hpp"
@@ -86,14 +91,18 @@ struct SweepProtocol {
 struct OnsetCurve {
   double lambda = 0.0, Kc = 0.0, sigma0 = 0.0;
   std::vector<double> x, K;
-  std::vector<double> R, R_err;      ///< replica mean of <R>_t and its error
-  std::vector<double> R_theory;      ///< eq:rSigmaBesselMain (0 below K_c)
+  std::vector<double> R, R_err;  ///< replica mean of <R>_t and its error
+  std::vector<double> R_theory;  ///< eq:rSigmaBesselMain (0 below K_c)
+  /// eq:rSigmaBesselMain at the energy and momentum the sweep has at each K (replica mean; NaN
+  /// where a solve failed): see theory_at_sweep_state.
+  std::vector<double> R_theory_ep;
   std::vector<double> segments;      ///< segments run at each grid point
   std::vector<double> equilibrated;  ///< 1: at least one segment met the criterion
   std::vector<double> fitted;        ///< 1: used by the onset fit
   double R0 = 0.0;
   double x_on = NAN, x_on_err = NAN;  ///< simulation onset and its statistical error
   double x_on_theory = NAN;           ///< the same fit on the theory curve
+  double x_on_theory_ep = NAN;        ///< the same fit on R_theory_ep
   int points = 0;                     ///< grid points in the fit
   double time_units = 0.0;            ///< simulated time per replica
   double evaluations = 0.0;           ///< force evaluations (each covers all replicas)
@@ -188,6 +197,34 @@ inline void theory_curve(OnsetCurve& c, const Network& net, const PerronResult& 
   }
 }
 
+/// The theory at the state the sweep actually reached at each of its K: the variance
+/// mu0 = 2 E / N - (P / N)^2 of the run's own energy and momentum at that K (run_variance.hpp),
+/// per replica, then the replica mean of eq:rSigmaBesselMain with that offset. The swept states
+/// differ from the incoherent state of R_theory: each raise of K at a coherent state lowers H by
+/// dK / (2N) sum A cos, so late in a sweep the system has less energy than a fresh start at the
+/// same K (simulation_vs_theory.cpp); near onset the two coincide. Comparing <R> with both
+/// separates that energy path from a lag of the dynamics.
+inline void theory_at_sweep_state(OnsetCurve& c, const Network& net, const SimulationResult& r,
+                                  std::size_t first_point) {
+  const std::size_t B = r.points.front().R_mean.size();
+  const double n = static_cast<double>(net.size());
+  for (std::size_t k = first_point; k < c.x.size(); ++k) {
+    const double K = c.K[k];
+    if (!(K > 0.0)) {
+      c.R_theory_ep.push_back(0.0);
+      continue;
+    }
+    double sum = 0.0;
+    for (std::size_t b = 0; b < B; ++b) {
+      const double mu0 = incoherent_variance(r, K, b, n);
+      const double c0 = (c.sigma0 * c.sigma0 - mu0) / K;  // mu0 = sigma0^2 - K c0
+      const SelfConsistentSolution s = SelfConsistentSystem(net, c.lambda, c.sigma0, c0).solve(K);
+      sum += s.status == SolveStatus::failed ? NAN : s.R;
+    }
+    c.R_theory_ep.push_back(sum / static_cast<double>(B));
+  }
+}
+
 /// One sweep over the grid x (K = x K_c raised from 0, each K continuing the state): appends
 /// the points' x, K, segments, <R>, error and equilibration flag to c (lambda, Kc, sigma0 set)
 /// and adds the simulated time per replica to c.time_units.
@@ -225,6 +262,7 @@ inline void run_sweep(OnsetCurve& c, const DistributedNetwork& distributed, cons
     reduce_point(c, r, segment, m, equilibration_time(c.x[k], c.sigma0), protocol);
     segment += static_cast<std::size_t>(m);
   }
+  theory_at_sweep_state(c, net, r, first_point);
 }
 
 /// Points of the fit (equilibrated, excess in the window, theory finite) and both onsets.
@@ -241,6 +279,7 @@ inline void fit_onsets(OnsetCurve& c) {
   c.x_on = sim.x;
   c.x_on_err = sim.err;
   c.x_on_theory = extrapolated_onset(c.x, c.R_theory, 0.0, c.R, c.R_err, c.fitted).x;
+  c.x_on_theory_ep = extrapolated_onset(c.x, c.R_theory_ep, 0.0, c.R, c.R_err, c.fitted).x;
 }
 
 /// The refinement of onset_grid.hpp: a second sweep from K = 0 over the refined prefix of the
@@ -266,6 +305,7 @@ inline OnsetCurve refined_sweep(const OnsetCurve& first, const DistributedNetwor
     c.x.push_back(first.x[k]), c.K.push_back(first.K[k]);
     c.segments.push_back(first.segments[k]), c.equilibrated.push_back(first.equilibrated[k]);
     c.R.push_back(first.R[k]), c.R_err.push_back(first.R_err[k]);
+    c.R_theory_ep.push_back(first.R_theory_ep[k]);
   }
   return c;
 }
