@@ -6,7 +6,7 @@
 //   against lambda K (sigma0 = 0.35, Omega = 6).
 // Run:   verification_onset_er_sf [--scale ci|full] [--output F.h5]   (ctest -L verification)
 //        ci: N = 1000, segments of T2 = 100, T1 = 50, h = 0.05, 3 replicas, 1600 time units per
-//        network (~90 s on one core); full: N = 10^4, T2 = 300, T1 = 150, 1 replica,
+//        network (~90 s on one core); full: N = 10^4, T2 = 300, T1 = 150, 3 replicas,
 //        the method per grid point of support/pipeline_step.hpp (leap-frog h = 0.32 / 0.16 up
 //        to x = 1.5, blanes_moan 0.16 above; the work-precision choice) (the paper's T2 = 1000,
 //        h = 0.01 on ten networks does not fit in 20 min on 2 cores). The
@@ -37,6 +37,13 @@
 //   the per-point error (largest 0.013 against 0.016-0.03), mean difference -0.006 (about 0.03 in
 //   x_on through the fit); with 8 replicas at x = 0, 1.2, 2: 0.000, -0.001, +0.009 against
 //   errors 0.0008, 0.010, 0.009.
+// Replicas: 3 at both scales. With 1 replica (the full preset until session 6) a point's error is
+//   the batch-means SEM of one trajectory alone, and the fit se (0.002-0.012) missed most of the
+//   run-to-run spread of x_on: the same networks and seeds run at h = 0.01 and at the steps of
+//   support/pipeline_step.hpp moved x_on by -0.078 ... +0.070 over the 17 curves of the three
+//   onset drivers (no common sign; rms 0.035, i.e. sd ~0.025 per run, ~5x the median se), and
+//   check (b) failed for ER and SF here and in onset_sigma0. Replica 1 keeps its seed, so the
+//   3-replica run contains the 1-replica trajectory; the pipeline steps pay for the other two.
 // Not reproduced (ci), not a lag: even equilibrated (and with 600 time units per K, ER <d> = 50:
 //   <R> 0.213, 0.30, 0.36 at x = 1.2, 1.35, 1.5 against theory 0.258, 0.321, 0.364) the
 //   simulated excess near onset stays below eq:rSigmaBesselMain and rises nearly linearly in
@@ -72,7 +79,7 @@ verification::SweepProtocol protocol(bool full) {
   p.pipeline_steps = full;  // paper scale: support/pipeline_step.hpp
   p.duration = full ? 300.0 : 100.0;
   p.transient = full ? 150.0 : 50.0;
-  p.replicas = full ? 1 : 3;
+  p.replicas = 3;  // both scales: the replica spread is part of se (header: Replicas)
   return p;
 }
 

@@ -7,7 +7,7 @@
 // Run:   verification_onset_rewired [--scale ci|full] [--output F.h5]   (ctest -L verification)
 //        ci: N = 1000, segments of T2 = 100, T1 = 50, h = 0.05, 3 replicas, near-onset points
 //        repeated until equilibrated (support/onset_sweep.hpp), 1600 time units per network;
-//        full: N = 10^4, T2 = 300, T1 = 150, 1 replica, steps of
+//        full: N = 10^4, T2 = 300, T1 = 150, 3 replicas, steps of
 //        support/pipeline_step.hpp. Capped Chung-Lu, d_min = 33.3,
 //        targets capped at N - 1.
 // Networks: the original and two rewired ones, each rewired from the previous one (the paper's
@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
   p.pipeline_steps = full;  // paper scale: support/pipeline_step.hpp
   p.duration = full ? 300.0 : 100.0;
   p.transient = full ? 150.0 : 50.0;
-  p.replicas = full ? 1 : 3;
+  p.replicas = 3;  // both scales: replica spread in se (onset_er_sf.cpp header: Replicas)
   std::vector<OnsetCurve> curves;
   std::string labels = "[";
   for (std::size_t i = 0; i < nets.size(); ++i) {

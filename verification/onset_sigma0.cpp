@@ -8,7 +8,7 @@
 //        sigma0 = 0.2, 0.35, 0.5, 0.7 (a factor 3.5, a factor 12 in K_c).
 //        ci: N = 1000, q = 0.1 (the paper's ||d|| = 100; q = 0.01 would give ||d|| = 10 and a
 //        floor of 0.28), segments of T2 = 100, T1 = 50, h = 0.05, 3 replicas; full: N = 10^4,
-//        q = 0.01, T2 = 300, T1 = 150, 1 replica, steps of support/pipeline_step.hpp. Near-onset
+//        q = 0.01, T2 = 300, T1 = 150, 3 replicas, steps of support/pipeline_step.hpp. Near-onset
 //        points are repeated until equilibrated (support/onset_sweep.hpp: time at K >= 15 /
 //        gamma(x)); gamma scales with sigma0, so up to 6 segments here (sigma0 = 0.2: x = 1.2
 //        x6, 1.35 x4, 1.5 x3), 1500-2100 time units per sigma0. Each sigma0 has its own
@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
   p.duration = full ? 300.0 : 100.0;
   p.transient = full ? 150.0 : 50.0;
   p.max_segments = 6;
-  p.replicas = full ? 1 : 3;
+  p.replicas = 3;  // both scales: replica spread in se (onset_er_sf.cpp header: Replicas)
   const std::vector<double> sigma0{0.2, 0.35, 0.5, 0.7};
   std::vector<OnsetCurve> curves;
   for (std::size_t i = 0; i < sigma0.size(); ++i) {
