@@ -1,4 +1,4 @@
-# Script mode (cmake -P): writes OUTPUT from src/core/version.hpp.in with the current
+# Script mode (cmake -P): writes OUTPUT from src/core/version.cpp.in with the current
 # `git describe --always --dirty`; "unknown" outside a git checkout. Used by HmfnetVersion.cmake
 # at configure time and by the hmfnet_version target at build time.
 find_package(Git QUIET)
@@ -12,4 +12,4 @@ if(GIT_FOUND AND EXISTS ${SOURCE_DIR}/.git)
     set(HMFNET_GIT_COMMIT "unknown")
   endif()
 endif()
-configure_file(${SOURCE_DIR}/src/core/version.hpp.in ${OUTPUT} @ONLY)
+configure_file(${SOURCE_DIR}/src/core/version.cpp.in ${OUTPUT} @ONLY)

@@ -2,12 +2,12 @@
 
 #include "cli/validators.hpp"
 #include "core/error.hpp"
-#include "hmfnet/version.hpp"
+#include "core/version.hpp"
 
 namespace hmfnet::cli {
 
 void configure_app(CLI::App& app) {
-  app.set_version_flag("--version", std::string(k_version) + " (" + k_git_commit + ")");
+  app.set_version_flag("--version", std::string(version()) + " (" + git_commit() + ")");
   app.require_subcommand(1);
   // One line, like every other error: "hmfnet: error: CAUSE (see --help)".
   app.failure_message([](const CLI::App*, const CLI::Error& e) {

@@ -1,7 +1,7 @@
 #include "cli/provenance.hpp"
 
 #include "cli/commands.hpp"
-#include "hmfnet/version.hpp"
+#include "core/version.hpp"
 
 namespace hmfnet::cli {
 
@@ -9,8 +9,8 @@ std::string provenance(const std::string& producer, const nlohmann::json& parame
   nlohmann::json j;
   j["producer"] = producer;
   j["parameters"] = parameters;
-  j["hmfnet_version"] = k_version;
-  j["git_commit"] = k_git_commit;
+  j["hmfnet_version"] = version();
+  j["git_commit"] = git_commit();
   j["command_line"] = command_line();
   return j.dump();
 }

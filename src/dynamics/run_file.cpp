@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/atomic_file.hpp"
-#include "hmfnet/version.hpp"
+#include "core/version.hpp"
 
 namespace hmfnet {
 
@@ -150,8 +150,8 @@ void write_run_file(const std::string& path, const SimulationResult& result,
     const hid_t root = f.id();
     f.set_attribute(root, "hmfnet_format", std::string("simulation"));
     f.set_attribute(root, "format_version", std::int64_t{1});
-    f.set_attribute(root, "hmfnet_version", std::string(k_version));
-    f.set_attribute(root, "git_commit", std::string(k_git_commit));
+    f.set_attribute(root, "hmfnet_version", std::string(version()));
+    f.set_attribute(root, "git_commit", std::string(git_commit()));
     f.set_attribute(root, "parameters", meta.parameters_json);
     f.set_attribute(root, "network", meta.network_json);
     f.set_attribute(root, "provenance", meta.provenance_json);

@@ -4,7 +4,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "hmfnet/version.hpp"
+#include "core/version.hpp"
 #include "io/hdf5_file.hpp"
 
 namespace hmfnet {
@@ -62,8 +62,8 @@ void write_network_hdf5(const std::string& path, const Network& network,
     const hid_t root = file.id();
     file.set_attribute(root, "hmfnet_format", std::string("network"));
     file.set_attribute(root, "format_version", k_format_version);
-    file.set_attribute(root, "hmfnet_version", std::string(k_version));
-    file.set_attribute(root, "git_commit", std::string(k_git_commit));
+    file.set_attribute(root, "hmfnet_version", std::string(version()));
+    file.set_attribute(root, "git_commit", std::string(git_commit()));
     file.set_attribute(root, "provenance", provenance);
     const H5Id group = file.create_group("network");
     file.set_attribute(group.get(), "n", static_cast<std::int64_t>(network.size()));

@@ -10,7 +10,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "hmfnet/version.hpp"
+#include "core/version.hpp"
 #include "io/hdf5_file.hpp"
 
 namespace hmfnet::verification {
@@ -144,9 +144,10 @@ void ClaimCheck::account(double simulated_time, double evaluations) {
 int ClaimCheck::exit_code() {
   const double wall = now_seconds() - m_start;
   if (m_evaluations > 0.0) {
-    std::printf("  INFO  work: %.4g force evaluations; leap-frog h = 0.01 over the same simulated "
-                "time: %.4g (%.3gx)\n",
-                m_evaluations, m_paper_evaluations, m_paper_evaluations / m_evaluations);
+    std::printf(
+        "  INFO  work: %.4g force evaluations; leap-frog h = 0.01 over the same simulated "
+        "time: %.4g (%.3gx)\n",
+        m_evaluations, m_paper_evaluations, m_paper_evaluations / m_evaluations);
   }
   std::printf("%s: %d check(s) failed (%.1f s)\n", m_failed == 0 ? "VERIFIED" : "NOT VERIFIED",
               m_failed, wall);
@@ -177,8 +178,8 @@ void ClaimCheck::write_output(double wall_seconds) const {
     file.set_attribute(root, "scale", std::string(m_options.full ? "full" : "ci"));
     file.set_attribute(root, "passed", static_cast<std::int64_t>(m_failed == 0));
     file.set_attribute(root, "checks", checks.dump());
-    file.set_attribute(root, "hmfnet_version", std::string(k_version));
-    file.set_attribute(root, "git_commit", std::string(k_git_commit));
+    file.set_attribute(root, "hmfnet_version", std::string(version()));
+    file.set_attribute(root, "git_commit", std::string(git_commit()));
     file.set_attribute(root, "wall_seconds", wall_seconds);
     file.set_attribute(root, "force_evaluations", m_evaluations);
     file.set_attribute(root, "paper_evaluations", m_paper_evaluations);
