@@ -15,7 +15,10 @@
 //                                           error by <~ 5.8 < 2^4 gained by halving h)
 // Scale-free networks (capped Chung-Lu, as the scene): leap-frog 0.32 sufficed at 3 K_c; below,
 // omega_max is smaller and the floor larger, so x <= 3 keeps it; 3 < x <= 6 halves it (leap-frog's
-// error goes as (h omega_max)^2: x 2.4 at most, against 4). Networks of other kinds (rewired,
+// error goes as (h omega_max)^2: x 2.4 at most, against 4). Measured near onset too, where <R>_t
+// decides x_on (docs/scripts/sf_step_near_onset.sh: alpha 2.8, N = 10^4, the onset sweep's
+// segments, 48 replicas per step): <R>_t averaged over x = 1.1-1.5 differs between h = 0.32 and
+// 0.16 by -0.0010 +- 0.0022, i.e. x_on by <~ 0.02 (2 se). Networks of other kinds (rewired,
 // communities) take ER's rule, the more demanding of the two.
 // sigma0: K_c scales with sigma0^2 and R does not (eq:criticalKFirstOrder), so omega_max scales
 // with sigma0 / 0.35: above 0.35 the step shrinks by that factor (halvings), below it is kept.
