@@ -7,9 +7,12 @@
 # conserved energy and momentum (mu0 = 2E/N - (P/N)^2, verification/support/run_variance.hpp).
 #
 # Usage: docs/scripts/er_long_window.sh HMFNET_BINARY   (KEEP=1 keeps the temporary folder)
-# Scene: ER N = 10^4, q = 0.01 (seed 1), sigma0 = 0.34641016 (sqrt(0.12) to 8 digits), Omega = 6, K = 2 and 3 K_c, each from
-# the incoherent start (--restart-each-K, as the driver), T = 4000, blanes_moan h = 0.16 (the
-# pipeline's step at 2-3 K_c), 4 replicas (seeds 1-4). About 18 min on one core.
+# Scene: ER N = 10^4, q = 0.01 (seed 1), sigma0 = 0.34641016 (sqrt(0.12) to 8 digits), Omega = 6,
+# K = 2 and 3 K_c, each from the incoherent start (--restart-each-K, as the driver), T = 4000,
+# blanes_moan h = 0.16 (the pipeline's step at 2-3 K_c), 4 replicas (seeds 1-4). About 18 min on
+# one core. Output (session 7; the README's Fig. 6 row): the gap at 2 K_c -0.0220, -0.0132,
+# -0.0089, -0.0073 over [500, 1000], [1000, 2000], [2000, 3000], [3000, 4000]; at 3 K_c -0.0096,
+# -0.0057, -0.0032, -0.0033.
 # Needs python3 with h5py and numpy (Debian's /usr/bin/python3, ci/install-deps.sh).
 set -euo pipefail
 
