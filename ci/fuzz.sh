@@ -49,6 +49,11 @@ first_frame_outside_runtimes() {
     /ERROR:/ { seen = 1 }
     !seen || !/^ +#[0-9]+ / { next }
     / in (__interceptor_|__sanitizer|__asan|__lsan|__ubsan|fuzzer::|malloc|calloc|realloc|operator new|__mem|__str)/ { next }
+    # The sanitizer interceptors under their plain C names (strdup, memcpy, ... as clang 14
+    # prints them): a C function of the harness binary with no source location, i.e. linked in
+    # without debug info. Our own code is built with -g, so its frames carry file:line instead
+    # of (binary+offset), and its functions are C++ (hmfnet::...).
+    / in [A-Za-z_][A-Za-z0-9_]* \(\/[^)]*\/fuzz_[a-z0-9_]+\+0x[0-9a-f]+\)/ { next }
     /\(\/lib\/x86_64-linux-gnu\/libc\.so/ { next }   # the signal trampoline of a timeout report
     { print; exit }
   ' "$1"
