@@ -39,11 +39,13 @@ std::vector<double> parse_sweep(const std::string& text) {
   std::stringstream in(text);
   std::string part;
   while (std::getline(in, part, ':')) {
+    std::size_t used = 0;
     try {
-      std::size_t used = 0;
       v.push_back(std::stod(part, &used));
-      if (used != part.size()) throw std::invalid_argument(part);
     } catch (const std::exception&) {
+      used = 0;  // not a number (std::stod throws): refused below with the option's grammar
+    }
+    if (used == 0 || used != part.size()) {
       throw ParameterError("--K-sweep", text, "START:STOP:STEP with numbers");
     }
   }
@@ -164,7 +166,7 @@ void run(const SimulateFlags& f) {
   out["lambda"] = perron.lambda;
   out["Kc"] = Kc;
   out["force"] = result.force_name;
-  out["integrator"] = params.integrator;
+  out["integrator"] = step_at(params, 0).integrator;
   out["steps"] = result.steps;
   out["integration_seconds"] = result.integration_seconds;
   // Aggregate over replicas: each step reads every stored entry once per replica's sum.
@@ -174,25 +176,17 @@ void run(const SimulateFlags& f) {
   out["resumed"] = result.resumed;
   for (const auto& p : result.points) out["points"].push_back(point_json(p, Kc));
   if (!f.output.empty()) {
-    nlohmann::json provenance_params = {{"input", f.input},
-                                        {"sigma0", f.sigma0},
-                                        {"omega", f.omega},
-                                        {"seed", f.seed},
-                                        {"replicas", f.replicas},
-                                        {"h", f.h},
-                                        {"T", f.T},
-                                        {"transient", f.transient},
-                                        {"K", params.K},
-                                        {"continue_state", params.continue_state}};
     RunMetadata meta;
-    meta.parameters_json = provenance_params.dump();
+    meta.inputs_json =
+        nlohmann::json{{"input", f.input}, {"force", f.force}, {"precision", f.precision}}.dump();
     meta.network_json = nlohmann::json{
         {"n", net.size()},
         {"nnz", net.nnz()},
         {"edges", net.edges()},
         {"lambda", perron.lambda},
         {"Kc", Kc}}.dump();
-    nlohmann::json prov = nlohmann::json::parse(provenance("simulate", provenance_params));
+    nlohmann::json prov =
+        nlohmann::json::parse(provenance("simulate", run_parameters(params, meta.inputs_json)));
     prov["ranks"] = ParallelSession::ranks();
     prov["threads"] = omp_get_max_threads();
     prov["wall_seconds"] =

@@ -1,21 +1,110 @@
 #include "dynamics/checkpoint.hpp"
 
 #include <cstdio>
+#include <sstream>
 
 #include "core/atomic_file.hpp"
+#include "core/error.hpp"
 #include "dynamics/run_file.hpp"
 #include "io/hdf5_file.hpp"
+#include "parallel/parallel_session.hpp"
 
 namespace hmfnet {
 
 namespace {
 
-constexpr std::int64_t k_checkpoint_version = 3;  // 2: checksum; 3: measured frame
+// 2: checksum; 3: measured frame; 4: the fields of segment_state.hpp's lists, named in the file
+// (count_fields, real_fields, array_fields), node statistics carry their frame frequency.
+constexpr std::int64_t k_checkpoint_version = 4;
 
-void write_vector(const Hdf5File& f, hid_t g, const std::string& name,
-                  const std::vector<double>& v) {
-  f.write(g, name, v);
+std::size_t columns_of(int width, int replicas) {
+  return static_cast<std::size_t>(width > 0 ? width : replicas);
 }
+
+// Segment and position -> record (collective: rows are gathered, additive sums reduced).
+class Capture {
+ public:
+  Capture(CheckpointRecord& out, int replicas, const RowExchange& exchange)
+      : m_out(out), m_replicas(replicas), m_exchange(exchange) {}
+
+  void count(const std::string& name, std::int64_t x) { m_out.counts.emplace_back(name, x); }
+  void real(const std::string& name, double x) { m_out.reals.emplace_back(name, x); }
+  void replicated(const std::string& name, const std::vector<double>& v) {
+    m_out.arrays.push_back({name, v, 1});
+  }
+  void rows(const std::string& name, const std::vector<double>& local, int width) {
+    const std::size_t w = columns_of(width, m_replicas);
+    // An accumulator not started yet is empty on every rank that has rows; all ranks must take
+    // the same branch because gather is collective.
+    const bool started = ParallelSession::max(local.empty() ? 0.0 : 1.0) > 0.0;
+    m_out.arrays.push_back(
+        {name, started ? m_exchange.gather(local, w) : std::vector<double>{}, w});
+  }
+  void batch_means(const std::string& name, const BatchMeans& b) {
+    count(name + "_count", b.count());
+    m_out.arrays.push_back({name + "_sums", b.sums(), static_cast<std::size_t>(b.width())});
+  }
+  void node_statistics(const std::string& name, const NodeStatistics& s) {
+    rows(name + "_rows", s.row_state(), NodeStatistics::k_row_width);
+    std::vector<double> globals = s.global_state();
+    const auto shared = static_cast<std::ptrdiff_t>(NodeStatistics::k_shared_globals);
+    std::vector<double> additive(globals.begin() + shared, globals.end());
+    ParallelSession::sum_in_place(additive);
+    std::copy(additive.begin(), additive.end(), globals.begin() + shared);
+    replicated(name + "_globals", globals);
+  }
+
+ private:
+  CheckpointRecord& m_out;
+  int m_replicas;
+  const RowExchange& m_exchange;
+};
+
+// Record -> segment and position (collective: rows are scattered). Every size is checked, so a
+// record of another run shape is refused with the field's name.
+class Restore {
+ public:
+  Restore(const CheckpointRecord& in, int replicas, const RowExchange& exchange)
+      : m_in(in), m_replicas(replicas), m_exchange(exchange) {}
+
+  void count(const std::string& name, std::int64_t& x) const { x = m_in.count(name); }
+  void real(const std::string& name, double& x) const { x = m_in.real(name); }
+  void replicated(const std::string& name, std::vector<double>& v) const {
+    v = sized(name, static_cast<std::size_t>(m_replicas)).values;
+  }
+  void rows(const std::string& name, std::vector<double>& local, int width) const {
+    const auto& a = m_in.array(name);
+    if (a.columns != columns_of(width, m_replicas)) misfit(name, "has the wrong number of columns");
+    local = a.values.empty() ? std::vector<double>{} : m_exchange.scatter(a.values, a.columns);
+  }
+  void batch_means(const std::string& name, BatchMeans& b) const {
+    b.restore(m_in.count(name + "_count"), sized(name + "_sums", b.sums().size()).values);
+  }
+  void node_statistics(const std::string& name, NodeStatistics& s) const {
+    std::vector<double> rows_state;
+    rows(name + "_rows", rows_state, NodeStatistics::k_row_width);
+    if (rows_state.size() != s.row_state().size()) misfit(name + "_rows", "does not fit this run");
+    const auto& globals = sized(name + "_globals", s.global_state().size()).values;
+    s.restore(std::move(rows_state), globals, ParallelSession::rank() == 0);
+  }
+
+ private:
+  const CheckpointRecord::Array& sized(const std::string& name, std::size_t size) const {
+    const auto& a = m_in.array(name);
+    if (a.values.size() != size) {
+      misfit(name, "has " + std::to_string(a.values.size()) + " values where this run has " +
+                       std::to_string(size));
+    }
+    return a;
+  }
+  [[noreturn]] void misfit(const std::string& name, const std::string& cause) const {
+    throw InputError(m_in.source, 0, "checkpoint field " + name + " " + cause);
+  }
+
+  const CheckpointRecord& m_in;
+  int m_replicas;
+  const RowExchange& m_exchange;
+};
 
 // FNV-1a (64 bit) over the bytes of everything a resume uses, in a fixed order: a bit flipped on
 // disk (or a file truncated and padded) changes it, and the checkpoint is refused instead of
@@ -25,6 +114,10 @@ class Fnv1a {
   void add(const void* data, std::size_t bytes) {
     const auto* b = static_cast<const unsigned char*>(data);
     for (std::size_t k = 0; k < bytes; ++k) m_hash = (m_hash ^ b[k]) * 0x100000001b3ULL;
+  }
+  void add(const std::string& s) {
+    add_scalar(static_cast<std::uint64_t>(s.size()));
+    add(s.data(), s.size());
   }
   void add(const std::vector<double>& v) {
     add_scalar(static_cast<std::uint64_t>(v.size()));
@@ -46,17 +139,20 @@ class Fnv1a {
 
 std::string checksum(const Checkpoint& c) {
   Fnv1a h;
-  h.add(c.fingerprint.data(), c.fingerprint.size());
-  h.add_scalar(static_cast<std::int64_t>(c.k_index));
-  for (const std::int64_t x : {c.segment_step, c.steps_total, c.evaluations, c.batch_count,
-                               static_cast<std::int64_t>(c.replicas)}) {
+  h.add(c.fingerprint);
+  h.add_scalar(static_cast<std::int64_t>(c.replicas));
+  for (const auto& [name, x] : c.record.counts) {
+    h.add(name);
     h.add_scalar(x);
   }
-  h.add_scalar(c.integration_seconds);
-  for (const auto* v : {&c.theta, &c.p, &c.batch_sums, &c.energy0, &c.momentum0, &c.momentum_scale,
-                        &c.energy_err_max, &c.momentum_drift_max, &c.theta_T1, &c.R_node_sum,
-                        &c.node_rows, &c.node_globals}) {
-    h.add(*v);
+  for (const auto& [name, x] : c.record.reals) {
+    h.add(name);
+    h.add_scalar(x);
+  }
+  for (const auto& a : c.record.arrays) {
+    h.add(a.name);
+    h.add_scalar(static_cast<std::uint64_t>(a.columns));
+    h.add(a.values);
   }
   for (const PointResult& pt : c.points) {
     h.add_scalar(pt.K);
@@ -74,7 +170,83 @@ std::string checksum(const Checkpoint& c) {
   return h.hex();
 }
 
+template <class Pairs>
+std::string joined_names(const Pairs& items) {
+  std::string names;
+  for (const auto& item : items) names += (names.empty() ? "" : "\n") + std::string(item.first);
+  return names;
+}
+
+std::vector<std::string> split_names(const std::string& joined) {
+  std::vector<std::string> names;
+  std::istringstream in(joined);
+  for (std::string line; std::getline(in, line);) names.push_back(line);
+  return names;
+}
+
 }  // namespace
+
+std::int64_t CheckpointRecord::count(const std::string& name) const {
+  for (const auto& [n, x] : counts)
+    if (n == name) return x;
+  throw InputError(source, 0, "checkpoint lacks the field " + name);
+}
+
+double CheckpointRecord::real(const std::string& name) const {
+  for (const auto& [n, x] : reals)
+    if (n == name) return x;
+  throw InputError(source, 0, "checkpoint lacks the field " + name);
+}
+
+const CheckpointRecord::Array& CheckpointRecord::array(const std::string& name) const {
+  for (const auto& a : arrays)
+    if (a.name == name) return a;
+  throw InputError(source, 0, "checkpoint lacks the field " + name);
+}
+
+RowExchange row_exchange(const DistributedNetwork& network, const std::string& source) {
+  const auto n = static_cast<std::size_t>(network.global_size());
+  const auto first = static_cast<std::size_t>(network.first_row());
+  const auto rows = static_cast<std::size_t>(network.local_size());
+  RowExchange exchange;
+  exchange.gather = [&network, n, rows](const std::vector<double>& local, std::size_t width) {
+    std::vector<double> global(n * width), column(rows);
+    for (std::size_t b = 0; b < width; ++b) {
+      for (std::size_t r = 0; r < rows; ++r) column[r] = local[r * width + b];
+      const std::vector<double> all = network.gather(column);
+      for (std::size_t i = 0; i < n; ++i) global[i * width + b] = all[i];
+    }
+    return global;
+  };
+  exchange.scatter = [n, first, rows, source](const std::vector<double>& global,
+                                              std::size_t width) {
+    if (global.size() != n * width) {
+      throw InputError(source, 0,
+                       "checkpoint arrays do not fit this network (" +
+                           std::to_string(global.size()) + " values for " + std::to_string(n) +
+                           " nodes x " + std::to_string(width) + ")");
+    }
+    const auto begin = global.begin() + static_cast<std::ptrdiff_t>(first * width);
+    return std::vector<double>(begin, begin + static_cast<std::ptrdiff_t>(rows * width));
+  };
+  return exchange;
+}
+
+CheckpointRecord capture(const RunPosition& position, const SegmentState& segment, int replicas,
+                         const RowExchange& exchange) {
+  CheckpointRecord record;
+  Capture visitor(record, replicas, exchange);
+  visit_position_fields(position, visitor);
+  visit_fields(segment, visitor);
+  return record;
+}
+
+void restore(const CheckpointRecord& record, RunPosition& position, SegmentState& segment,
+             int replicas, const RowExchange& exchange) {
+  Restore visitor(record, replicas, exchange);
+  visit_position_fields(position, visitor);
+  visit_fields(segment, visitor);
+}
 
 void write_checkpoint(const std::string& path, const Checkpoint& c) {
   AtomicFile out(path);
@@ -84,26 +256,20 @@ void write_checkpoint(const std::string& path, const Checkpoint& c) {
     f.set_attribute(root, "hmfnet_format", std::string("checkpoint"));
     f.set_attribute(root, "format_version", k_checkpoint_version);
     f.set_attribute(root, "fingerprint", c.fingerprint);
-    f.set_attribute(root, "k_index", static_cast<std::int64_t>(c.k_index));
-    f.set_attribute(root, "segment_step", c.segment_step);
-    f.set_attribute(root, "steps_total", c.steps_total);
-    f.set_attribute(root, "evaluations", c.evaluations);
-    f.set_attribute(root, "integration_seconds", c.integration_seconds);
     f.set_attribute(root, "replicas", static_cast<std::int64_t>(c.replicas));
-    f.set_attribute(root, "batch_count", c.batch_count);
-    const auto w = static_cast<std::size_t>(c.replicas);
-    f.write_matrix(root, "theta", c.theta, c.theta.size() / w, w);
-    f.write_matrix(root, "p", c.p, c.p.size() / w, w);
-    write_vector(f, root, "batch_sums", c.batch_sums);
-    write_vector(f, root, "energy0", c.energy0);
-    write_vector(f, root, "momentum0", c.momentum0);
-    write_vector(f, root, "momentum_scale", c.momentum_scale);
-    write_vector(f, root, "energy_err_max", c.energy_err_max);
-    write_vector(f, root, "momentum_drift_max", c.momentum_drift_max);
-    write_vector(f, root, "theta_T1", c.theta_T1);
-    write_vector(f, root, "R_node_sum", c.R_node_sum);
-    write_vector(f, root, "node_rows", c.node_rows);
-    write_vector(f, root, "node_globals", c.node_globals);
+    f.set_attribute(root, "count_fields", joined_names(c.record.counts));
+    f.set_attribute(root, "real_fields", joined_names(c.record.reals));
+    std::vector<std::pair<std::string, int>> array_names;
+    for (const auto& a : c.record.arrays) array_names.emplace_back(a.name, 0);
+    f.set_attribute(root, "array_fields", joined_names(array_names));
+    for (const auto& [name, x] : c.record.counts) f.set_attribute(root, name, x);
+    for (const auto& [name, x] : c.record.reals) f.set_attribute(root, name, x);
+    for (const auto& a : c.record.arrays) {
+      if (a.columns == 0 || a.values.size() % a.columns != 0) {
+        f.fail("checkpoint field " + a.name + " is not a whole number of rows");
+      }
+      f.write_matrix(root, a.name, a.values, a.values.size() / a.columns, a.columns);
+    }
     write_results(f, c.points, c.series, c.replicas);
     f.set_attribute(root, "checksum", checksum(c));
     f.flush();
@@ -118,33 +284,27 @@ Checkpoint read_checkpoint(const std::string& path) {
       f.string_attribute(root, "hmfnet_format") != "checkpoint") {
     f.fail("not an hmfnet checkpoint (attribute hmfnet_format != \"checkpoint\")");
   }
-  if (f.int_attribute(root, "format_version") != k_checkpoint_version) {
-    f.fail("checkpoint format version not supported");
+  const std::int64_t version = f.int_attribute(root, "format_version");
+  if (version != k_checkpoint_version) {
+    f.fail("checkpoint format version " + std::to_string(version) + " is not supported (this " +
+           "hmfnet reads version " + std::to_string(k_checkpoint_version) +
+           "): it was written by another hmfnet; remove it to start the run over, or finish the "
+           "run with the hmfnet that wrote it");
   }
   Checkpoint c;
   c.fingerprint = f.string_attribute(root, "fingerprint");
-  c.k_index = static_cast<int>(f.int_attribute(root, "k_index"));
-  c.segment_step = f.int_attribute(root, "segment_step");
-  c.steps_total = f.int_attribute(root, "steps_total");
-  c.evaluations = f.int_attribute(root, "evaluations");
-  c.integration_seconds = f.double_attribute(root, "integration_seconds");
   c.replicas = static_cast<int>(f.int_attribute(root, "replicas"));
-  c.batch_count = f.int_attribute(root, "batch_count");
-  std::size_t rows = 0, cols = 0;
-  c.theta = f.read_matrix(root, "theta", rows, cols);
-  if (cols != static_cast<std::size_t>(c.replicas))
-    f.fail("theta has the wrong number of replicas");
-  c.p = f.read_matrix(root, "p", rows, cols);
-  c.batch_sums = f.read_double(root, "batch_sums");
-  c.energy0 = f.read_double(root, "energy0");
-  c.momentum0 = f.read_double(root, "momentum0");
-  c.momentum_scale = f.read_double(root, "momentum_scale");
-  c.energy_err_max = f.read_double(root, "energy_err_max");
-  c.momentum_drift_max = f.read_double(root, "momentum_drift_max");
-  c.theta_T1 = f.read_double(root, "theta_T1");
-  c.R_node_sum = f.read_double(root, "R_node_sum");
-  c.node_rows = f.read_double(root, "node_rows");
-  c.node_globals = f.read_double(root, "node_globals");
+  if (c.replicas < 1) f.fail("checkpoint has no replicas");
+  c.record.source = path;
+  for (const auto& name : split_names(f.string_attribute(root, "count_fields")))
+    c.record.counts.emplace_back(name, f.int_attribute(root, name));
+  for (const auto& name : split_names(f.string_attribute(root, "real_fields")))
+    c.record.reals.emplace_back(name, f.double_attribute(root, name));
+  for (const auto& name : split_names(f.string_attribute(root, "array_fields"))) {
+    std::size_t rows = 0, cols = 0;
+    std::vector<double> values = f.read_matrix(root, name, rows, cols);
+    c.record.arrays.push_back({name, std::move(values), cols});
+  }
   read_results(f, c.points, c.series, c.replicas);
   const std::string stored = f.string_attribute(root, "checksum"), computed = checksum(c);
   if (stored != computed) {

@@ -35,7 +35,8 @@ KickDriftSplitting::KickDriftSplitting(std::string name, int order, std::vector<
     : m_name(std::move(name)),
       m_order(order),
       m_kicks(std::move(kicks)),
-      m_drifts(std::move(drifts)) {
+      m_drifts(std::move(drifts)),
+      m_stability_limit(0.0) {
   // The coefficients are tabulated to ~15 digits and the middle ones are derived from the
   // others, so a consistent method sums to 1 within a few ulps; 1e-12 only rejects typos.
   constexpr double consistency = 1e-12;
@@ -46,6 +47,46 @@ KickDriftSplitting::KickDriftSplitting(std::string name, int order, std::vector<
     throw ParameterError("splitting " + m_name, "inconsistent coefficients",
                          "one more kick than drifts and each set summing to 1");
   }
+  m_stability_limit = splitting_stability_limit(m_kicks, m_drifts);
+}
+
+namespace {
+
+// Trace of the one-step map of q' = p, p' = -q at step x (omega = 1, h = x).
+double splitting_trace(const std::vector<double>& kicks, const std::vector<double>& drifts,
+                       double x) {
+  double m00 = 1.0, m01 = 0.0, m10 = 0.0, m11 = 1.0;  // M = identity; M <- step * M
+  const auto apply_kick = [&](double b) {
+    m10 -= b * x * m00;
+    m11 -= b * x * m01;
+  };
+  for (std::size_t i = 0; i < drifts.size(); ++i) {
+    apply_kick(kicks[i]);
+    m00 += drifts[i] * x * m10;
+    m01 += drifts[i] * x * m11;
+  }
+  apply_kick(kicks.back());
+  return m00 + m11;
+}
+
+}  // namespace
+
+double splitting_stability_limit(const std::vector<double>& kicks,
+                                 const std::vector<double>& drifts) {
+  constexpr double grid = 1e-3, last = 8.0, resolution = 1e-12;
+  const auto unstable = [&](double x) {
+    return std::abs(splitting_trace(kicks, drifts, x)) >= 2.0;
+  };
+  for (double x = grid; x <= last; x += grid) {
+    if (!unstable(x)) continue;
+    double lo = x - grid, hi = x;
+    while (hi - lo > resolution) {
+      const double mid = 0.5 * (lo + hi);
+      (unstable(mid) ? hi : lo) = mid;
+    }
+    return lo;
+  }
+  return last;
 }
 
 void KickDriftSplitting::step(RotorState& state, double h, const std::vector<double>& K,

@@ -95,8 +95,9 @@ std::vector<double> NodeStatistics::global_state() const {
                         m_frame_turned,
                         m_frame_last,
                         m_t_first,
-                        m_t_last};
-  static_assert(k_shared_globals == 6);
+                        m_t_last,
+                        m_omega};
+  static_assert(k_shared_globals == 7);
   g.insert(g.end(), m_histogram.begin(), m_histogram.end());
   g.insert(g.end(), m_rotor_theta.begin(), m_rotor_theta.end());
   g.insert(g.end(), m_rotor_p.begin(), m_rotor_p.end());
@@ -112,6 +113,7 @@ void NodeStatistics::restore(std::vector<double> row_state, const std::vector<do
   m_frame_last = global[3];
   m_t_first = global[4];
   m_t_last = global[5];
+  m_omega = global[6];
   // Rank-additive parts: the summed values go to one rank, zeros elsewhere.
   const std::size_t g0 = k_shared_globals, h = m_histogram.size(), s = m_rotor_theta.size();
   for (std::size_t k = 0; k < h; ++k) m_histogram[k] = owner_of_globals ? global[g0 + k] : 0.0;

@@ -65,7 +65,7 @@ class NodeStatistics {
   // Checkpoint state: per-row sums (rows x k_row_width) and globals: the first k_shared_globals
   // are equal on every rank, the rest are additive over ranks.
   static constexpr int k_row_width = 8;
-  static constexpr std::size_t k_shared_globals = 6;
+  static constexpr std::size_t k_shared_globals = 7;
   std::vector<double> row_state() const { return m_rows_sums; }
   std::vector<double> global_state() const;
   void restore(std::vector<double> row_state, const std::vector<double>& global_state,

@@ -63,9 +63,16 @@ void write_results(const Hdf5File& f, const std::vector<PointResult>& points,
                    const TimeSeries& series, int replicas) {
   const auto w = static_cast<std::size_t>(replicas);
   const H5Id pg = f.create_group("points");
-  std::vector<double> K;
-  for (const auto& p : points) K.push_back(p.K);
+  std::vector<double> K, h;
+  std::vector<std::string> integrator;
+  for (const auto& p : points) {
+    K.push_back(p.K);
+    h.push_back(p.h);
+    integrator.push_back(p.integrator);
+  }
   f.write(pg.get(), "K", K);
+  f.write(pg.get(), "h", h);
+  f.write_strings(pg.get(), "integrator", integrator);
   for (const auto& [name, field] : k_per_replica) {
     f.write_matrix(pg.get(), name, stack(points, field), points.size(), w);
   }
@@ -91,8 +98,17 @@ void read_results(const Hdf5File& f, std::vector<PointResult>& points, TimeSerie
   const auto w = static_cast<std::size_t>(replicas);
   const H5Id pg = f.open_group("points");
   const std::vector<double> K = f.read_double(pg.get(), "K");
+  const std::vector<double> h = f.read_double(pg.get(), "h");
+  const std::vector<std::string> integrator = f.read_strings(pg.get(), "integrator");
+  if (h.size() != K.size() || integrator.size() != K.size()) {
+    f.fail("points/h and points/integrator must have one entry per K");
+  }
   points.assign(K.size(), PointResult{});
-  for (std::size_t k = 0; k < K.size(); ++k) points[k].K = K[k];
+  for (std::size_t k = 0; k < K.size(); ++k) {
+    points[k].K = K[k];
+    points[k].h = h[k];
+    points[k].integrator = integrator[k];
+  }
   std::size_t rows = 0, cols = 0;
   for (const auto& [name, field] : k_per_replica) {
     unstack(points, field, f.read_matrix(pg.get(), name, rows, cols), w);
@@ -142,6 +158,26 @@ std::uintmax_t estimated_checkpoint_bytes(const SimulationParameters& params, No
   return static_cast<std::uintmax_t>(8.0 * (result_doubles(params, N) + state) + k_metadata_bytes);
 }
 
+nlohmann::json run_parameters(const SimulationParameters& params, const std::string& inputs_json) {
+  nlohmann::json j = to_json(params);
+  if (!inputs_json.empty()) j.update(nlohmann::json::parse(inputs_json));
+  return j;
+}
+
+namespace {
+
+// The step of the whole run when every K shares it; with per-K steps (SimulationParameters::steps)
+// the top-level attributes say so and /points/integrator, /points/h hold each K's.
+StepChoice common_step(const SimulationParameters& params) {
+  const StepChoice first = step_at(params, 0);
+  for (std::size_t k = 1; k < params.K.size(); ++k) {
+    if (!(step_at(params, k) == first)) return {"per K: see /points/integrator", std::nan("")};
+  }
+  return first;
+}
+
+}  // namespace
+
 void write_run_file(const std::string& path, const SimulationResult& result,
                     const SimulationParameters& params, const RunMetadata& meta) {
   AtomicFile out(path);
@@ -149,15 +185,17 @@ void write_run_file(const std::string& path, const SimulationResult& result,
     const Hdf5File f(out.temp_path(), Hdf5File::Mode::create);
     const hid_t root = f.id();
     f.set_attribute(root, "hmfnet_format", std::string("simulation"));
-    f.set_attribute(root, "format_version", std::int64_t{1});
+    // 2: /points/h and /points/integrator; `parameters` is run_parameters (every field).
+    f.set_attribute(root, "format_version", std::int64_t{2});
     f.set_attribute(root, "hmfnet_version", std::string(version()));
     f.set_attribute(root, "git_commit", std::string(git_commit()));
-    f.set_attribute(root, "parameters", meta.parameters_json);
+    f.set_attribute(root, "parameters", run_parameters(params, meta.inputs_json).dump());
     f.set_attribute(root, "network", meta.network_json);
     f.set_attribute(root, "provenance", meta.provenance_json);
-    f.set_attribute(root, "integrator", params.integrator);
+    const StepChoice step = common_step(params);
+    f.set_attribute(root, "integrator", step.integrator);
     f.set_attribute(root, "force", result.force_name);
-    f.set_attribute(root, "h", params.h);
+    f.set_attribute(root, "h", step.h);
     f.set_attribute(root, "duration", params.duration);
     f.set_attribute(root, "transient", params.transient);
     f.set_attribute(root, "replicas", static_cast<std::int64_t>(params.replicas.size()));

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <nlohmann/json.hpp>
 #include <numeric>
 
 #include "core/error.hpp"
@@ -14,6 +13,7 @@
 #include "dynamics/interrupt.hpp"
 #include "dynamics/node_statistics.hpp"
 #include "dynamics/ordered_sum.hpp"
+#include "dynamics/segment_state.hpp"
 #include "dynamics/time_average.hpp"
 #include "parallel/parallel_session.hpp"
 
@@ -48,19 +48,25 @@ TimeOrigin time_origin(const SimulationParameters& p, std::size_t k) {
   return origin;
 }
 
-// Accumulators of the K being integrated.
-struct Segment {
-  std::int64_t step = 0;
-  BatchMeans R;
-  std::vector<double> energy0, momentum0, momentum_scale, energy_err_max, momentum_drift_max;
-  std::vector<double> theta_T1, R_node_sum;
-  NodeStatistics stats;
-};
-
 struct Observables {
   std::vector<double> R, energy, momentum, momentum_scale;
 };
 
+// One run of the schedule on this rank's rows. The rules that keep it correct:
+//  - m_state, m_f and m_seg travel together: m_f holds the force at m_state's phases (any change
+//    of m_state outside an integrator step is followed by m_f.update), and m_seg holds the
+//    accumulators of the current K, m_seg.step steps into it. What a resume needs is exactly
+//    RunPosition + SegmentState (segment_state.hpp) + the results so far: a new accumulator goes
+//    into SegmentState and its field list, never into a member of Run.
+//  - m_integrator, m_h and m_origin belong to the current K (step_at); only use_step sets them.
+//  - m_result.steps and m_result.force_evaluations + m_f.count() count every session of the run
+//    (a resume starts from the checkpoint's counts); every exit from the stepping loop goes
+//    through finish(), which sets the counts and the integration time.
+//  - Collective (every rank calls them at the same step, in the same order): order_parameter,
+//    observe, sample, record, guard, start_segment, finish_segment, maybe_checkpoint, restore,
+//    and m_exchange's gather and scatter. A decision that ends or branches the loop is agreed over
+//    ranks first (the root's clock decides a timed checkpoint, the maximum over ranks a signal or a
+//    blow-up), so no rank waits in a collective that another has skipped.
 class Run {
  public:
   Run(const DistributedNetwork& network, const std::vector<double>& degrees, CouplingForce& force,
@@ -73,7 +79,8 @@ class Run {
         m_f(force),
         m_width(static_cast<int>(params.replicas.size())),
         m_total_degree(std::accumulate(degrees.begin(), degrees.end(), 0.0)),
-        m_n(static_cast<double>(network.global_size())) {}
+        m_n(static_cast<double>(network.global_size())),
+        m_exchange(row_exchange(network, params.checkpoint_path)) {}
 
   SimulationResult execute();
 
@@ -83,21 +90,24 @@ class Run {
   }
   std::vector<double> order_parameter() const;
   Observables observe(double K) const;
+  std::vector<double> energy_errors(const Observables& o) const;
   void use_step(int k_index);
   std::int64_t segment_steps() const { return steps_for(m_params.duration, m_h); }
   std::int64_t transient_steps() const { return steps_for(m_params.transient, m_h); }
+  SegmentState fresh_segment(double omega) const;
   void start_segment(int k_index);
   void finish_segment(int k_index);
   void record(int k_index);
   void sample();
-  void guard(double K, const Observables& o);
+  void guard(double K, const std::vector<double>& errors);
   void maybe_checkpoint(int k_index, bool force_now);
-  void finish_interrupted();
+  void finish(bool interrupted);
   void restore(const Checkpoint& c);
-  std::vector<double> gather(const std::vector<double>& local, int width = 0) const;
-  std::vector<double> scatter(const std::vector<double>& global, int width = 0) const;
   std::int64_t rotor_samples() const;
   void progress(int k_index, bool final_line) const;
+  std::string run_fingerprint() const {
+    return fingerprint(m_params, m_network.global_size(), m_network.global_nnz());
+  }
 
   const DistributedNetwork& m_network;
   CouplingForce& m_force;
@@ -109,8 +119,9 @@ class Run {
   int m_width;
   double m_total_degree;
   double m_n;
+  RowExchange m_exchange;  // this rank's rows <-> whole-network arrays
   RotorState m_state;
-  Segment m_seg;
+  SegmentState m_seg;
   SimulationResult m_result;
   int m_k_start = 0;
   double m_seconds_before = 0.0;  // integration seconds of earlier sessions (resume)
@@ -162,6 +173,16 @@ void Run::use_step(int k_index) {
   m_origin = time_origin(m_params, static_cast<std::size_t>(k_index));
 }
 
+SegmentState Run::fresh_segment(double omega) const {
+  SegmentState s;
+  s.R = BatchMeans(segment_steps() - transient_steps(), m_params.batches, m_width);
+  if (m_params.node_data) {
+    s.stats = NodeStatistics(m_state.first_row, m_state.rows, m_params.rotor_node, rotor_samples(),
+                             m_params.phase_bins, omega);
+  }
+  return s;
+}
+
 void Run::start_segment(int k_index) {
   const double K = m_params.K[static_cast<std::size_t>(k_index)];
   use_step(k_index);
@@ -169,11 +190,8 @@ void Run::start_segment(int k_index) {
     m_state = initial_state(m_network.first_row(), m_network.local_size(), m_params.replicas);
     m_f.update(m_state);
   }
-  const std::int64_t steps = segment_steps();
-  const std::int64_t transient = transient_steps();
-  m_seg = Segment{};
-  m_seg.R = BatchMeans(steps - transient, m_params.batches, m_width);
   const Observables o = observe(K);
+  m_seg = fresh_segment(o.momentum[0] / m_n);
   m_seg.energy0 = o.energy;
   m_seg.momentum0 = o.momentum;
   m_seg.momentum_scale = o.momentum_scale;
@@ -181,9 +199,7 @@ void Run::start_segment(int k_index) {
   m_seg.momentum_drift_max.assign(static_cast<std::size_t>(m_width), 0.0);
   if (m_params.node_data) {
     m_seg.R_node_sum.assign(m_state.p.size(), 0.0);
-    if (transient == 0) m_seg.theta_T1 = m_state.theta;
-    m_seg.stats = NodeStatistics(m_state.first_row, m_state.rows, m_params.rotor_node,
-                                 rotor_samples(), m_params.phase_bins, o.momentum[0] / m_n);
+    if (transient_steps() == 0) m_seg.theta_T1 = m_state.theta;
   }
 }
 
@@ -209,12 +225,22 @@ void Run::sample() {
   if (m_seg.step % per_unit == 0) m_seg.stats.add_phase_sample(y, m_width);
 }
 
-void Run::guard(double K, const Observables& o) {
-  for (std::size_t b = 0; b < o.energy.size(); ++b) {
-    const double err = std::abs(o.energy[b] - m_seg.energy0[b]) / std::abs(m_seg.energy0[b]);
+std::vector<double> Run::energy_errors(const Observables& o) const {
+  std::vector<double> errors(o.energy.size());
+  for (std::size_t b = 0; b < errors.size(); ++b) {
+    errors[b] = std::abs(o.energy[b] - m_seg.energy0[b]) / std::abs(m_seg.energy0[b]);
+  }
+  return errors;
+}
+
+void Run::guard(double K, const std::vector<double>& errors) {
+  // Every rank holds the same (reduced) energies, so every rank takes the same branch.
+  for (std::size_t b = 0; b < errors.size(); ++b) {
+    const double err = errors[b];
     if (std::isfinite(err) && err <= m_params.energy_tolerance) continue;
-    // Leap-frog is stable for h omega < 2; the fastest local libration frequency is
-    // omega_max = sqrt(K max_n R_n) (small oscillations in the well K R_n cos(theta - psi_n)).
+    // The fastest local libration frequency is omega_max = sqrt(K max_n R_n) (small oscillations
+    // in the well K R_n cos(theta - psi_n)); the running method is stable for h omega_max below
+    // its own linear bound (Integrator::stability_limit).
     const auto& y = m_force.local_fields();
     double max_r = 0.0;
     for (std::size_t k = 0; 2 * k + 1 < y.size(); ++k) {
@@ -222,18 +248,18 @@ void Run::guard(double K, const Observables& o) {
     }
     max_r = ParallelSession::max(max_r);
     const double omega = std::sqrt(K * max_r);
-    char message[512];
+    const double limit = m_integrator->stability_limit();
+    const std::string what = std::isfinite(err) ? "relative energy error " + std::to_string(err) +
+                                                      " exceeds the tolerance " +
+                                                      std::to_string(m_params.energy_tolerance)
+                                                : std::string("energy is NaN or infinite");
+    char message[640];
     std::snprintf(message, sizeof message,
                   "K = %g, t = %g (replica %zu): %s; the step h = %g is likely too large for "
-                  "this K: leap-frog needs h * omega_max < 2 with omega_max = sqrt(K max_n R_n) "
-                  "= %.4g, i.e. h < %.4g",
-                  K, static_cast<double>(m_seg.step) * m_h, b,
-                  std::isfinite(err)
-                      ? ("relative energy error " + std::to_string(err) +
-                         " exceeds the tolerance " + std::to_string(m_params.energy_tolerance))
-                            .c_str()
-                      : "energy is NaN or infinite",
-                  m_h, omega, omega > 0 ? 2.0 / omega : INFINITY);
+                  "this K: %s is stable for h * omega_max < %.4g with omega_max = "
+                  "sqrt(K max_n R_n) = %.4g, i.e. h < %.4g",
+                  K, static_cast<double>(m_seg.step) * m_h, b, what.c_str(), m_h,
+                  m_integrator->name().c_str(), limit, omega, omega > 0 ? limit / omega : INFINITY);
     throw SimulationBlowUp(message);
   }
 }
@@ -244,9 +270,9 @@ void Run::record(int k_index) {
   if (m_params.node_data && m_seg.step > transient_steps()) {
     m_seg.stats.add_rotor_sample(m_state, static_cast<double>(m_seg.step) * m_h);
   }
-  for (std::size_t b = 0; b < o.energy.size(); ++b) {
-    const double err = std::abs(o.energy[b] - m_seg.energy0[b]) / std::abs(m_seg.energy0[b]);
-    m_seg.energy_err_max[b] = std::max(m_seg.energy_err_max[b], err);
+  const std::vector<double> errors = energy_errors(o);
+  for (std::size_t b = 0; b < errors.size(); ++b) {
+    m_seg.energy_err_max[b] = std::max(m_seg.energy_err_max[b], errors[b]);
     const double drift = std::abs(o.momentum[b] - m_seg.momentum0[b]) / m_seg.momentum_scale[b];
     m_seg.momentum_drift_max[b] = std::max(m_seg.momentum_drift_max[b], drift);
   }
@@ -256,33 +282,7 @@ void Run::record(int k_index) {
   ts.R.insert(ts.R.end(), o.R.begin(), o.R.end());
   ts.energy.insert(ts.energy.end(), o.energy.begin(), o.energy.end());
   ts.momentum.insert(ts.momentum.end(), o.momentum.begin(), o.momentum.end());
-  guard(K, o);
-}
-
-std::vector<double> Run::gather(const std::vector<double>& local, int width) const {
-  // Rows x width (default: replicas): one gather per column (checkpoints and results only).
-  const auto w = static_cast<std::size_t>(width > 0 ? width : m_width);
-  const auto rows = static_cast<std::size_t>(m_state.rows);
-  const auto n = static_cast<std::size_t>(m_network.global_size());
-  std::vector<double> global(n * w), column(rows);
-  for (std::size_t b = 0; b < w; ++b) {
-    for (std::size_t r = 0; r < rows; ++r) column[r] = local[r * w + b];
-    const std::vector<double> all = m_network.gather(column);
-    for (std::size_t i = 0; i < n; ++i) global[i * w + b] = all[i];
-  }
-  return global;
-}
-
-std::vector<double> Run::scatter(const std::vector<double>& global, int width) const {
-  const auto w = static_cast<std::size_t>(width > 0 ? width : m_width);
-  const auto first =
-      static_cast<std::ptrdiff_t>(m_state.first_row) * static_cast<std::ptrdiff_t>(w);
-  const auto count = static_cast<std::ptrdiff_t>(m_state.rows) * static_cast<std::ptrdiff_t>(w);
-  if (global.size() < static_cast<std::size_t>(first + count)) {
-    throw InputError(m_params.checkpoint_path, 0,
-                     "checkpoint arrays are too short for this network");
-  }
-  return std::vector<double>(global.begin() + first, global.begin() + first + count);
+  guard(K, errors);
 }
 
 void Run::maybe_checkpoint(int k_index, bool force_now) {
@@ -294,35 +294,18 @@ void Run::maybe_checkpoint(int k_index, bool force_now) {
       ParallelSession::max(
           ParallelSession::rank() == 0 && since >= m_params.checkpoint_seconds ? 1.0 : 0.0) > 0.0;
   if (!due) return;
-  Checkpoint c;
-  c.fingerprint = fingerprint(m_params, m_network);
-  c.k_index = k_index;
-  c.segment_step = m_seg.step;
-  c.steps_total = m_result.steps;
-  c.evaluations = m_f.count() + m_result.force_evaluations;
-  c.integration_seconds =
+  RunPosition position;
+  position.k_index = k_index;
+  position.steps_total = m_result.steps;
+  position.evaluations = m_f.count() + m_result.force_evaluations;
+  position.integration_seconds =
       m_seconds_before + std::chrono::duration<double>(Clock::now() - m_loop_start).count();
+  position.theta = m_state.theta;
+  position.p = m_state.p;
+  Checkpoint c;
+  c.fingerprint = run_fingerprint();
   c.replicas = m_width;
-  c.theta = gather(m_state.theta);
-  c.p = gather(m_state.p);
-  c.batch_count = m_seg.R.count();
-  c.batch_sums = m_seg.R.sums();
-  c.energy0 = m_seg.energy0;
-  c.momentum0 = m_seg.momentum0;
-  c.momentum_scale = m_seg.momentum_scale;
-  c.energy_err_max = m_seg.energy_err_max;
-  c.momentum_drift_max = m_seg.momentum_drift_max;
-  if (!m_seg.theta_T1.empty()) c.theta_T1 = gather(m_seg.theta_T1);
-  if (!m_seg.R_node_sum.empty()) c.R_node_sum = gather(m_seg.R_node_sum);
-  if (m_params.node_data) {
-    c.node_rows = gather(m_seg.stats.row_state(), NodeStatistics::k_row_width);
-    c.node_globals = m_seg.stats.global_state();
-    // Counts are per rank and additive; the leading shared values are equal on every rank.
-    const auto shared = static_cast<std::ptrdiff_t>(NodeStatistics::k_shared_globals);
-    std::vector<double> additive(c.node_globals.begin() + shared, c.node_globals.end());
-    ParallelSession::sum_in_place(additive);
-    std::copy(additive.begin(), additive.end(), c.node_globals.begin() + shared);
-  }
+  c.record = capture(position, m_seg, m_width, m_exchange);
   c.points = m_result.points;
   c.series = m_result.series;
   if (ParallelSession::rank() == 0) write_checkpoint(m_params.checkpoint_path, c);
@@ -330,55 +313,48 @@ void Run::maybe_checkpoint(int k_index, bool force_now) {
   m_last_checkpoint = Clock::now();
 }
 
-void Run::finish_interrupted() {
-  m_result.interrupted = true;
+void Run::finish(bool interrupted) {
+  m_result.interrupted = interrupted;
   m_result.integration_seconds =
       m_seconds_before + std::chrono::duration<double>(Clock::now() - m_loop_start).count();
   m_result.force_evaluations += m_f.count();
+  m_result.nnz_per_evaluation = static_cast<EdgeOffset>(
+      ParallelSession::sum(static_cast<double>(m_force.work_per_evaluation())));
+  m_result.force_name = m_force.name();
 }
 
 void Run::restore(const Checkpoint& c) {
-  if (c.fingerprint != fingerprint(m_params, m_network)) {
+  if (c.fingerprint != run_fingerprint()) {
     throw InputError(m_params.checkpoint_path, 0,
                      "checkpoint belongs to a run with other parameters or another network "
                      "(fingerprints differ); remove it or drop --resume");
   }
-  if (c.replicas != m_width || c.k_index < 0 || c.k_index >= static_cast<int>(m_params.K.size())) {
+  const std::int64_t k_index = c.record.count("k_index");
+  if (c.replicas != m_width || k_index < 0 ||
+      k_index >= static_cast<std::int64_t>(m_params.K.size())) {
     throw InputError(m_params.checkpoint_path, 0, "checkpoint does not fit this run");
   }
-  m_state.theta = scatter(c.theta);
-  m_state.p = scatter(c.p);
+  m_k_start = static_cast<int>(k_index);
+  use_step(m_k_start);
+  m_seg = fresh_segment(0.0);  // shapes only: the frame frequency is restored with the rest
+  RunPosition position;
+  hmfnet::restore(c.record, position, m_seg, m_width, m_exchange);
+  m_state.theta = std::move(position.theta);
+  m_state.p = std::move(position.p);
   m_f.update(m_state);
-  m_k_start = c.k_index;
-  use_step(c.k_index);
-  m_seg = Segment{};
-  m_seg.R = BatchMeans(segment_steps() - transient_steps(), m_params.batches, m_width);
-  m_seg.step = c.segment_step;
-  m_seg.R.restore(c.batch_count, c.batch_sums);
-  m_seg.energy0 = c.energy0;
-  m_seg.momentum0 = c.momentum0;
-  m_seg.momentum_scale = c.momentum_scale;
-  m_seg.energy_err_max = c.energy_err_max;
-  m_seg.momentum_drift_max = c.momentum_drift_max;
-  m_seg.theta_T1 = c.theta_T1.empty() ? std::vector<double>{} : scatter(c.theta_T1);
-  if (!c.R_node_sum.empty()) m_seg.R_node_sum = scatter(c.R_node_sum);
-  if (m_params.node_data) {
-    m_seg.stats = NodeStatistics(m_state.first_row, m_state.rows, m_params.rotor_node,
-                                 rotor_samples(), m_params.phase_bins, c.momentum0[0] / m_n);
-    m_seg.stats.restore(scatter(c.node_rows, NodeStatistics::k_row_width), c.node_globals,
-                        ParallelSession::rank() == 0);
-  }
   m_result.points = c.points;
   m_result.series = c.series;
-  m_result.steps = c.steps_total;
-  m_result.force_evaluations = c.evaluations - m_f.count();
-  m_seconds_before = c.integration_seconds;
+  m_result.steps = position.steps_total;
+  m_result.force_evaluations = position.evaluations - m_f.count();
+  m_seconds_before = position.integration_seconds;
   m_result.resumed = true;
 }
 
 void Run::finish_segment(int k_index) {
   PointResult point;
   point.K = m_params.K[static_cast<std::size_t>(k_index)];
+  point.integrator = m_integrator->name();
+  point.h = m_h;
   point.R_mean = m_seg.R.mean();
   point.R_sem = m_seg.R.standard_error();
   point.energy_rel_error_max = m_seg.energy_err_max;
@@ -390,8 +366,9 @@ void Run::finish_segment(int k_index) {
       omega[k] = (m_state.theta[k] - m_seg.theta_T1[k]) / span;
       r_node[k] = m_seg.R_node_sum[k] / static_cast<double>(m_seg.R.count());
     }
-    point.omega_node = gather(omega);
-    point.R_node = gather(r_node);
+    const auto w = static_cast<std::size_t>(m_width);
+    point.omega_node = m_exchange.gather(omega, w);
+    point.R_node = m_exchange.gather(r_node, w);
     NodeStatisticsResult stats = m_seg.stats.finish(m_network);
     point.r_node = std::move(stats.r);
     point.fluctuation = std::move(stats.fluctuation);
@@ -440,7 +417,7 @@ SimulationResult Run::execute() {
     const std::int64_t steps = segment_steps(), transient = transient_steps();
     while (m_seg.step < steps) {
       if (m_params.stop_after_steps > 0 && ++session_steps > m_params.stop_after_steps) {
-        m_result.interrupted = true;
+        finish(true);
         return m_result;
       }
       m_integrator->step(m_state, m_h, K, m_f);
@@ -455,7 +432,7 @@ SimulationResult Run::execute() {
         // checkpoint, so --resume continues from here.
         if (ParallelSession::max(static_cast<double>(interrupt_signal())) > 0.0) {
           maybe_checkpoint(k, true);
-          finish_interrupted();
+          finish(true);
           return m_result;
         }
         if (m_seg.step < steps) maybe_checkpoint(k, false);
@@ -464,92 +441,11 @@ SimulationResult Run::execute() {
     finish_segment(k);
   }
   progress(static_cast<int>(m_params.K.size()) - 1, true);
-  m_result.integration_seconds =
-      m_seconds_before + std::chrono::duration<double>(Clock::now() - m_loop_start).count();
-  m_result.force_evaluations += m_f.count();
-  m_result.nnz_per_evaluation = static_cast<EdgeOffset>(
-      ParallelSession::sum(static_cast<double>(m_force.work_per_evaluation())));
-  m_result.force_name = m_force.name();
+  finish(false);
   return m_result;
 }
 
 }  // namespace
-
-StepChoice step_at(const SimulationParameters& p, std::size_t k) {
-  return p.steps.empty() ? StepChoice{p.integrator, p.h} : p.steps.at(k);
-}
-
-void validate(const SimulationParameters& p) {
-  const auto positive = [](double x) { return x > 0.0 && std::isfinite(x); };
-  if (!positive(p.h)) throw ParameterError("h", std::to_string(p.h), "h > 0");
-  if (!(p.transient >= 0.0) || !std::isfinite(p.transient)) {
-    throw ParameterError("transient", std::to_string(p.transient), "transient >= 0");
-  }
-  if (!positive(p.duration) || !(p.duration > p.transient)) {
-    throw ParameterError("T", std::to_string(p.duration), "T > transient >= 0");
-  }
-  if (p.K.empty()) throw ParameterError("K", "empty schedule", "at least one K >= 0");
-  if (!p.steps.empty() && p.steps.size() != p.K.size()) {
-    throw ParameterError("steps", std::to_string(p.steps.size()) + " entries",
-                         "none, or one per K (" + std::to_string(p.K.size()) + ")");
-  }
-  for (std::size_t k = 0; k < p.steps.size(); ++k) {
-    if (!positive(p.steps[k].h)) {
-      throw ParameterError("steps[" + std::to_string(k) + "].h", std::to_string(p.steps[k].h),
-                           "h > 0");
-    }
-    make_integrator(p.steps[k].integrator);  // unknown names fail here, before any work
-  }
-  for (std::size_t k = 0; k < std::max<std::size_t>(p.steps.size(), 1); ++k) {
-    const double h = step_at(p, k).h;
-    const std::int64_t samples = steps_for(p.duration, h) - steps_for(p.transient, h);
-    if (samples < p.batches) {
-      throw ParameterError("T - transient", std::to_string(p.duration - p.transient),
-                           "at least " + std::to_string(p.batches) +
-                               " steps of h = " + std::to_string(h) + " to average over");
-    }
-  }
-  for (const double K : p.K) {
-    if (!(K >= 0.0) || !std::isfinite(K)) throw ParameterError("K", std::to_string(K), "K >= 0");
-  }
-  if (p.replicas.empty() || p.replicas.size() > 64) {
-    throw ParameterError("replicas", std::to_string(p.replicas.size()), "1 to 64");
-  }
-  for (const auto& r : p.replicas) {
-    if (!positive(r.sigma0)) throw ParameterError("sigma0", std::to_string(r.sigma0), "sigma0 > 0");
-  }
-  if (p.record_stride < 1)
-    throw ParameterError("record stride", std::to_string(p.record_stride), ">= 1");
-  if (p.phase_bins < 1) throw ParameterError("phase bins", std::to_string(p.phase_bins), ">= 1");
-  if (p.rotor_node < 0) throw ParameterError("rotor node", std::to_string(p.rotor_node), ">= 0");
-  if (p.batches < 2) throw ParameterError("batches", std::to_string(p.batches), ">= 2");
-  if (!positive(p.energy_tolerance)) {
-    throw ParameterError("energy tolerance", std::to_string(p.energy_tolerance), "> 0");
-  }
-}
-
-std::string fingerprint(const SimulationParameters& p, const DistributedNetwork& network) {
-  nlohmann::json j;
-  j["h"] = p.h;
-  j["T"] = p.duration;
-  j["transient"] = p.transient;
-  j["K"] = p.K;
-  j["continue_state"] = p.continue_state;
-  for (const auto& r : p.replicas) {
-    j["replicas"].push_back({{"omega", r.omega}, {"sigma0", r.sigma0}, {"seed", r.seed}});
-  }
-  j["record_stride"] = p.record_stride;
-  j["batches"] = p.batches;
-  j["node_data"] = p.node_data;
-  j["rotor_node"] = p.rotor_node;
-  j["phase_bins"] = p.phase_bins;
-  j["integrator"] = p.integrator;
-  // Only when set, so the fingerprints (and checkpoints) of single-step runs are unchanged.
-  for (const auto& s : p.steps) j["steps"].push_back({{"integrator", s.integrator}, {"h", s.h}});
-  j["n"] = network.global_size();
-  j["nnz"] = network.global_nnz();
-  return j.dump();
-}
 
 SimulationResult simulate(const DistributedNetwork& network, const std::vector<double>& degrees,
                           CouplingForce& force, const SimulationParameters& params) {

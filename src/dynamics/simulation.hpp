@@ -17,48 +17,16 @@
 #include "dynamics/coupling_force.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/rotor_state.hpp"
+#include "dynamics/simulation_parameters.hpp"
 #include "dynamics/step_choice.hpp"
 #include "parallel/distributed_network.hpp"
 
 namespace hmfnet {
 
-struct SimulationParameters {
-  double h = 0.01;           ///< time step, > 0
-  double duration = 1000.0;  ///< T2: time per K, > transient
-  double transient = 500.0;  ///< T1: discarded at the start of each K, >= 0
-  std::vector<double> K;     ///< the schedule, each >= 0
-  /// true: the paper's protocol, each K continues from the state left by the previous one;
-  /// false: each K restarts from the initial condition.
-  bool continue_state = true;
-  std::vector<InitialCondition> replicas{InitialCondition{}};
-  int record_stride = 100;         ///< steps between time-series records
-  int batches = 20;                ///< batch means for the SEM of <R>_t
-  double energy_tolerance = 1e-2;  ///< stop when |E - E0| / |E0| exceeds this
-  bool node_data = false;          ///< per-node statistics over [T1, T2] (PointResult)
-  NodeIndex rotor_node = 0;        ///< node_data: the rotor whose (theta_bar, p_bar) is sampled
-  int phase_bins = 72;             ///< node_data: bins of the psi_n - psi_1 histogram
-  std::string integrator = "leapfrog";
-  /// Optional per-K method: empty, or one entry per element of K that replaces h and integrator
-  /// for that K's segment (each segment still has T and T1 in time units; the state carries
-  /// over, since the force cache of an integrator step is method-independent).
-  std::vector<StepChoice> steps;
-  std::string checkpoint_path;      ///< empty: no checkpoints
-  double checkpoint_seconds = 5.0;  ///< wall time between checkpoints (also at each K's end)
-  bool resume = false;              ///< continue from checkpoint_path if it exists
-  bool progress = false;            ///< progress line on stderr (root rank)
-  /// Stop after this many steps in this session, as an interruption would (0: never). For
-  /// fault-injection tests of checkpoint/resume; not part of the fingerprint.
-  std::int64_t stop_after_steps = 0;
-};
-
-/// Throws ParameterError naming the first parameter out of range.
-void validate(const SimulationParameters& params);
-
-/// The integrator and step of the k-th K: params.steps[k], or (integrator, h) when steps is empty.
-StepChoice step_at(const SimulationParameters& params, std::size_t k);
-
 struct PointResult {
   double K = 0.0;
+  std::string integrator;                    ///< the method of this K's segment (step_at)
+  double h = 0.0;                            ///< the step of this K's segment
   std::vector<double> R_mean, R_sem;         ///< per replica
   std::vector<double> energy_rel_error_max;  ///< per replica, over the whole segment
   std::vector<double> momentum_drift;        ///< per replica: max |P(t) - P(0)| / sum |p_n(0)|
@@ -102,9 +70,5 @@ class SimulationBlowUp : public std::runtime_error {
 /// ParameterError, InputError (checkpoint unreadable or from other parameters).
 SimulationResult simulate(const DistributedNetwork& network, const std::vector<double>& degrees,
                           CouplingForce& force, const SimulationParameters& params);
-
-/// A JSON fingerprint of everything that determines the trajectory; a checkpoint is only resumed
-/// by a run with the same fingerprint.
-std::string fingerprint(const SimulationParameters& params, const DistributedNetwork& network);
 
 }  // namespace hmfnet

@@ -4,21 +4,25 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/error.hpp"
+
 namespace hmfnet {
 
 BatchMeans::BatchMeans(std::int64_t samples, int batches, int width)
     : m_samples(samples), m_batches(batches), m_width(width) {
   if (batches < 2 || samples < batches || width < 1) {
-    throw std::invalid_argument("batch means need samples >= batches >= 2 (got " +
-                                std::to_string(samples) + " samples, " + std::to_string(batches) +
-                                " batches)");
+    throw ParameterError("batch means",
+                         std::to_string(samples) + " samples, " + std::to_string(batches) +
+                             " batches, width " + std::to_string(width),
+                         "samples >= batches >= 2, width >= 1");
   }
   m_sums.assign(static_cast<std::size_t>(batches) * static_cast<std::size_t>(width), 0.0);
 }
 
 std::int64_t BatchMeans::batch_size(int batch) const {
   // Sample i belongs to batch floor(i B / S); count the samples of `batch` added so far.
-  const std::int64_t first = (static_cast<std::int64_t>(batch) * m_samples + m_batches - 1) / m_batches;
+  const std::int64_t first =
+      (static_cast<std::int64_t>(batch) * m_samples + m_batches - 1) / m_batches;
   const std::int64_t end =
       (static_cast<std::int64_t>(batch + 1) * m_samples + m_batches - 1) / m_batches;
   return std::max<std::int64_t>(0, std::min(end, m_count) - first);
@@ -57,7 +61,8 @@ std::vector<double> BatchMeans::standard_error() const {
 }
 
 void BatchMeans::restore(std::int64_t count, std::vector<double> sums) {
-  if (sums.size() != m_sums.size()) throw std::invalid_argument("batch means: wrong state size");
+  // A caller's bug, not bad input: checkpoint.cpp checks the stored size before restoring.
+  if (sums.size() != m_sums.size()) throw std::logic_error("batch means: wrong state size");
   m_count = count;
   m_sums = std::move(sums);
 }

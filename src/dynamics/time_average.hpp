@@ -23,8 +23,8 @@ class BatchMeans {
   // State for checkpoints.
   const std::vector<double>& sums() const { return m_sums; }
   void restore(std::int64_t count, std::vector<double> sums);
-  std::int64_t planned() const { return m_samples; }
   int batches() const { return m_batches; }
+  int width() const { return m_width; }
 
  private:
   std::int64_t batch_size(int batch) const;

@@ -99,14 +99,56 @@ void write_vector(const Hdf5File& f, hid_t where, const std::string& name, const
 }
 }  // namespace
 
-void Hdf5File::write(hid_t where, const std::string& name, const std::vector<std::int64_t>& v) const {
+void Hdf5File::write(hid_t where, const std::string& name,
+                     const std::vector<std::int64_t>& v) const {
   write_vector(*this, where, name, v, H5T_STD_I64LE, H5T_NATIVE_INT64);
 }
-void Hdf5File::write(hid_t where, const std::string& name, const std::vector<std::int32_t>& v) const {
+void Hdf5File::write(hid_t where, const std::string& name,
+                     const std::vector<std::int32_t>& v) const {
   write_vector(*this, where, name, v, H5T_STD_I32LE, H5T_NATIVE_INT32);
 }
 void Hdf5File::write(hid_t where, const std::string& name, const std::vector<double>& v) const {
   write_vector(*this, where, name, v, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE);
+}
+
+void Hdf5File::write_strings(hid_t where, const std::string& name,
+                             const std::vector<std::string>& v) const {
+  std::size_t width = 1;
+  for (const auto& x : v) width = std::max(width, x.size());
+  std::vector<char> buffer(v.size() * width, '\0');
+  for (std::size_t k = 0; k < v.size(); ++k) v[k].copy(buffer.data() + k * width, v[k].size());
+  H5Id type(H5Tcopy(H5T_C_S1), H5Tclose);
+  H5Tset_size(type.get(), width);
+  H5Tset_strpad(type.get(), H5T_STR_NULLPAD);
+  const hsize_t dims[1] = {length_of(v.size())};
+  H5Id space(H5Screate_simple(1, dims, nullptr), H5Sclose);
+  H5Id set(H5Dcreate2(where, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT,
+                      H5P_DEFAULT),
+           H5Dclose);
+  if (set.get() < 0) fail("cannot create dataset " + name);
+  if (!v.empty() &&
+      H5Dwrite(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data()) < 0) {
+    fail("cannot write dataset " + name);
+  }
+}
+
+std::vector<std::string> Hdf5File::read_strings(hid_t where, const std::string& name) const {
+  const std::size_t n = checked_length(where, name, H5T_STRING);
+  H5Id set(H5Dopen2(where, name.c_str(), H5P_DEFAULT), H5Dclose);
+  H5Id type(H5Dget_type(set.get()), H5Tclose);
+  if (H5Tis_variable_str(type.get()) > 0) fail("dataset " + name + " is not fixed-length strings");
+  const std::size_t width = H5Tget_size(type.get());
+  std::vector<char> buffer(n * width);
+  if (!buffer.empty() &&
+      H5Dread(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data()) < 0) {
+    fail("cannot read dataset " + name);
+  }
+  std::vector<std::string> v(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const char* first = buffer.data() + k * width;
+    v[k].assign(first, std::find(first, first + width, '\0'));
+  }
+  return v;
 }
 
 std::size_t Hdf5File::dataset_length(hid_t set, const std::string& name,
@@ -120,7 +162,6 @@ std::size_t Hdf5File::dataset_length(hid_t set, const std::string& name,
   require_stored(*this, set, type.get(), name, dims[0]);
   return static_cast<std::size_t>(dims[0]);
 }
-
 
 namespace {
 template <class T>

@@ -45,6 +45,9 @@ class Hdf5File {
   std::vector<std::int64_t> read_int64(hid_t where, const std::string& name) const;
   std::vector<std::int32_t> read_int32(hid_t where, const std::string& name) const;
   std::vector<double> read_double(hid_t where, const std::string& name) const;
+  /// 1-D dataset of fixed-length strings (as long as the longest; h5py reads bytes).
+  void write_strings(hid_t where, const std::string& name, const std::vector<std::string>& v) const;
+  std::vector<std::string> read_strings(hid_t where, const std::string& name) const;
 
   /// 2-D row-major dataset rows x cols (HDF5 keeps C order, so h5py reads it as [rows, cols]).
   void write_matrix(hid_t where, const std::string& name, const std::vector<double>& v,

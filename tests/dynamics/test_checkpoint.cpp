@@ -89,7 +89,7 @@ TEST_CASE("A signal stops the run with a final checkpoint that resumes bit-ident
   REQUIRE(stopped.interrupted);
   REQUIRE(stopped.steps == p.record_stride);  // stopped at the first record
   ParallelSession::max(0.0);
-  REQUIRE(read_checkpoint(p.checkpoint_path).steps_total == p.record_stride);
+  REQUIRE(read_checkpoint(p.checkpoint_path).record.count("steps_total") == p.record_stride);
 
   p.resume = true;
   const SimulationResult resumed = simulate(d, net.degrees(), force, p);
@@ -121,8 +121,8 @@ TEST_CASE("The output size estimates bound the files a run writes [ER N=200]", "
   const auto run_bytes = std::filesystem::file_size(results);
   const auto checkpoint_bytes = std::filesystem::file_size(p.checkpoint_path);
   INFO("results " << run_bytes << " <= " << estimated_run_file_bytes(p, net.size())
-                  << ", checkpoint " << checkpoint_bytes << " <= "
-                  << estimated_checkpoint_bytes(p, net.size()));
+                  << ", checkpoint " << checkpoint_bytes
+                  << " <= " << estimated_checkpoint_bytes(p, net.size()));
   REQUIRE(run_bytes <= estimated_run_file_bytes(p, net.size()));
   REQUIRE(checkpoint_bytes <= estimated_checkpoint_bytes(p, net.size()));
   // Not absurdly loose either: within the 1 MiB metadata allowance plus 2x the data.

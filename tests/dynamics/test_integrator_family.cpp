@@ -319,3 +319,40 @@ TEST_CASE("Every integrator is bit-identical with 1 and 2 OpenMP threads [ER N=4
   }
   omp_set_num_threads(saved);
 }
+
+TEST_CASE("Each method's linear stability bound: closed forms and Yoshida's [harmonic oscillator]",
+          "[integrator]") {
+  // Leap-frog as a splitting (kicks 1/2, 1/2; drift 1): |trace| = |2 - x^2| < 2 iff x < 2.
+  const KickDriftSplitting leapfrog_as_splitting("leapfrog", 2, {0.5, 0.5}, {1.0});
+  CHECK_THAT(leapfrog_as_splitting.stability_limit(), Catch::Matchers::WithinAbs(2.0, 1e-9));
+  CHECK(LeapFrog().stability_limit() == 2.0);
+  CHECK_THAT(RungeKutta4().stability_limit(),
+             Catch::Matchers::WithinAbs(2.0 * std::sqrt(2.0), 1e-15));
+  // Yoshida's triple jump, independently: the product of three leap-frog maps
+  // [[1 - y^2/2, y], [-y (1 - y^2/4), 1 - y^2/2]] at y = w1 x, w0 x, w1 x (kicks unmerged, unlike
+  // the splitting's own product); its first crossing of |trace| = 2, scanned at 1e-5, is 1.57341.
+  const double c = std::cbrt(2.0), w1 = 1.0 / (2.0 - c), w0 = -c / (2.0 - c);
+  const auto trace = [&](double x) {
+    double a = 1.0, b = 0.0, cc = 0.0, dd = 1.0;  // running product, row-major
+    for (const double y : {w1 * x, w0 * x, w1 * x}) {
+      const double m00 = 1 - y * y / 2, m01 = y, m10 = -y * (1 - y * y / 4), m11 = m00;
+      const double na = m00 * a + m01 * cc, nb = m00 * b + m01 * dd;
+      const double nc = m10 * a + m11 * cc, nd = m10 * b + m11 * dd;
+      a = na, b = nb, cc = nc, dd = nd;
+    }
+    return a + dd;
+  };
+  double first_unstable = 0.0;
+  for (double x = 1e-5; x < 4.0 && first_unstable == 0.0; x += 1e-5) {
+    if (std::abs(trace(x)) >= 2.0) first_unstable = x;
+  }
+  CHECK_THAT(yoshida4().stability_limit(), Catch::Matchers::WithinAbs(first_unstable, 1e-5));
+  CHECK_THAT(yoshida4().stability_limit(), Catch::Matchers::WithinAbs(1.5734, 1e-4));
+  // Every method is stable just below its bound and unstable just above it.
+  for (const auto& name : {"yoshida4", "blanes_moan"}) {
+    const auto method = make_integrator(name);
+    INFO(name << ": " << method->stability_limit());
+    CHECK(method->stability_limit() > 0.5);
+    CHECK(method->stability_limit() < 8.0);
+  }
+}

@@ -7,7 +7,9 @@
 #include "core/error.hpp"
 #include "dynamics/network_force.hpp"
 #include "dynamics/rank_one_force.hpp"
+#include "dynamics/run_file.hpp"
 #include "dynamics/simulation.hpp"
+#include "io/hdf5_file.hpp"
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
 #include "parallel/parallel_session.hpp"
@@ -344,4 +346,112 @@ TEST_CASE("A per-K step list is range-checked naming the entry", "[simulation]")
   REQUIRE_THROWS_WITH(validate(p), Catch::Contains("euler"));
   p.steps = {{"leapfrog", 0.02}, {"leapfrog", 2.0}, {"leapfrog", 0.02}};
   REQUIRE_THROWS_WITH(validate(p), Catch::Contains("h = 2"));
+}
+
+// Bugs found by the review of issue #19, each reproduced before its fix.
+
+TEST_CASE("A run stopped by stop_after_steps reports its wall time and force evaluations",
+          "[simulation][bug]") {
+  // Before the fix the stop returned without finish: integration_seconds stayed 0 and the
+  // evaluation count missed this session's evaluations.
+  const Network net = erdos_renyi({200, 0.05, 6});
+  const DistributedNetwork d(net);
+  NetworkForce force(d);
+  SimulationParameters p = short_run();
+  p.stop_after_steps = 25;
+  const SimulationResult r = simulate(d, net.degrees(), force, p);
+  REQUIRE(r.interrupted);
+  REQUIRE(r.steps == 25);
+  // Leap-frog: the initial force, then one evaluation per step.
+  REQUIRE(r.force_evaluations == 26);
+  REQUIRE(r.integration_seconds > 0.0);
+  REQUIRE(r.force_name == force.name());
+}
+
+TEST_CASE("The blow-up message names the running method and its own stability bound [yoshida4]",
+          "[simulation][bug]") {
+  // Before the fix the message quoted leap-frog's bound h omega < 2 whatever ran.
+  const Network net = erdos_renyi({200, 0.1, 6});
+  const DistributedNetwork d(net);
+  NetworkForce force(d);
+  SimulationParameters p = short_run();
+  p.integrator = "yoshida4";
+  p.h = 0.5;
+  p.duration = 100.0;
+  p.transient = 10.0;
+  p.K = {4000.0};
+  try {
+    simulate(d, net.degrees(), force, p);
+    FAIL("no SimulationBlowUp");
+  } catch (const SimulationBlowUp& e) {
+    INFO(e.what());
+    const std::string limit = std::to_string(yoshida4().stability_limit()).substr(0, 5);
+    REQUIRE_THAT(e.what(), Catch::Contains("yoshida4 is stable for h * omega_max < " + limit));
+    REQUIRE_THAT(e.what(), !Catch::Contains("leap-frog") && !Catch::Contains("leapfrog"));
+  }
+}
+
+TEST_CASE("The guard stops on the same energy error the run records [ER N=200]",
+          "[simulation][bug]") {
+  // The error used to be computed twice per record (once for the record, once in the guard);
+  // now one value serves both, so a tolerance equal to the recorded maximum passes and the next
+  // double below it stops the run.
+  const Network net = erdos_renyi({200, 0.1, 6});
+  const DistributedNetwork d(net);
+  NetworkForce force(d);
+  SimulationParameters p = short_run();
+  p.h = 0.05;
+  double worst = 0.0;
+  for (const auto& point : simulate(d, net.degrees(), force, p).points) {
+    for (const double e : point.energy_rel_error_max) worst = std::max(worst, e);
+  }
+  REQUIRE(worst > 0.0);
+  p.energy_tolerance = worst;
+  REQUIRE_NOTHROW(simulate(d, net.degrees(), force, p));
+  p.energy_tolerance = std::nextafter(worst, 0.0);
+  REQUIRE_THROWS_AS(simulate(d, net.degrees(), force, p), SimulationBlowUp);
+}
+
+TEST_CASE("The results file records each K's integrator and step [per-K steps]",
+          "[simulation][bug]") {
+  // Before the fix the file's integrator and h attributes were those of SimulationParameters,
+  // whatever the per-K steps ran.
+  const Network net = erdos_renyi({200, 0.05, 6});
+  const DistributedNetwork d(net);
+  NetworkForce force(d);
+  SimulationParameters p = short_run();
+  p.steps = {{"leapfrog", 0.02}, {"yoshida4", 0.05}, {"blanes_moan", 0.1}};
+  const SimulationResult r = simulate(d, net.degrees(), force, p);
+  const std::string path = temp_path("hmfnet_test_per_k_steps");
+  if (ParallelSession::rank() == 0) write_run_file(path, r, p, {});
+  ParallelSession::max(0.0);
+  {
+    const Hdf5File f(path, Hdf5File::Mode::read);
+    const H5Id points = f.open_group("points");
+    REQUIRE(f.read_strings(points.get(), "integrator") ==
+            std::vector<std::string>{"leapfrog", "yoshida4", "blanes_moan"});
+    REQUIRE(f.read_double(points.get(), "h") == std::vector<double>{0.02, 0.05, 0.1});
+    REQUIRE_THAT(f.string_attribute(f.id(), "integrator"), Catch::Contains("per K"));
+    REQUIRE(std::isnan(f.double_attribute(f.id(), "h")));
+    const auto parameters = nlohmann::json::parse(f.string_attribute(f.id(), "parameters"));
+    REQUIRE(parameters == to_json(p));
+  }
+  ParallelSession::max(0.0);
+  if (ParallelSession::rank() == 0) std::filesystem::remove(path);
+}
+
+TEST_CASE("One serialisation: the fingerprint is to_json less the energy tolerance",
+          "[simulation]") {
+  SimulationParameters p = short_run();
+  nlohmann::json expected = to_json(p);
+  expected.erase("energy_tolerance");
+  expected["n"] = 10;
+  expected["nnz"] = 40;
+  REQUIRE(nlohmann::json::parse(fingerprint(p, 10, 40)) == expected);
+  SimulationParameters looser = p;
+  looser.energy_tolerance = 0.5;
+  REQUIRE(fingerprint(looser, 10, 40) == fingerprint(p, 10, 40));
+  SimulationParameters other_seed = p;
+  other_seed.replicas[0].seed += 1;
+  REQUIRE(fingerprint(other_seed, 10, 40) != fingerprint(p, 10, 40));
 }

@@ -1,0 +1,106 @@
+#include "dynamics/simulation_parameters.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+#include "dynamics/integrator.hpp"
+
+namespace hmfnet {
+
+namespace {
+
+std::int64_t steps_for(double time, double h) { return std::llround(time / h); }
+
+void validate_steps(const SimulationParameters& p) {
+  const auto positive = [](double x) { return x > 0.0 && std::isfinite(x); };
+  if (!p.steps.empty() && p.steps.size() != p.K.size()) {
+    throw ParameterError("steps", std::to_string(p.steps.size()) + " entries",
+                         "none, or one per K (" + std::to_string(p.K.size()) + ")");
+  }
+  for (std::size_t k = 0; k < p.steps.size(); ++k) {
+    if (!positive(p.steps[k].h)) {
+      throw ParameterError("steps[" + std::to_string(k) + "].h", std::to_string(p.steps[k].h),
+                           "h > 0");
+    }
+    make_integrator(p.steps[k].integrator);  // unknown names fail here, before any work
+  }
+  for (std::size_t k = 0; k < std::max<std::size_t>(p.steps.size(), 1); ++k) {
+    const double h = step_at(p, k).h;
+    const std::int64_t samples = steps_for(p.duration, h) - steps_for(p.transient, h);
+    if (samples < p.batches) {
+      throw ParameterError("T - transient", std::to_string(p.duration - p.transient),
+                           "at least " + std::to_string(p.batches) +
+                               " steps of h = " + std::to_string(h) + " to average over");
+    }
+  }
+}
+
+}  // namespace
+
+StepChoice step_at(const SimulationParameters& p, std::size_t k) {
+  return p.steps.empty() ? StepChoice{p.integrator, p.h} : p.steps.at(k);
+}
+
+void validate(const SimulationParameters& p) {
+  const auto positive = [](double x) { return x > 0.0 && std::isfinite(x); };
+  if (!positive(p.h)) throw ParameterError("h", std::to_string(p.h), "h > 0");
+  if (!(p.transient >= 0.0) || !std::isfinite(p.transient)) {
+    throw ParameterError("transient", std::to_string(p.transient), "transient >= 0");
+  }
+  if (!positive(p.duration) || !(p.duration > p.transient)) {
+    throw ParameterError("T", std::to_string(p.duration), "T > transient >= 0");
+  }
+  if (p.K.empty()) throw ParameterError("K", "empty schedule", "at least one K >= 0");
+  if (p.batches < 2) throw ParameterError("batches", std::to_string(p.batches), ">= 2");
+  validate_steps(p);
+  for (const double K : p.K) {
+    if (!(K >= 0.0) || !std::isfinite(K)) throw ParameterError("K", std::to_string(K), "K >= 0");
+  }
+  if (p.replicas.empty() || p.replicas.size() > 64) {
+    throw ParameterError("replicas", std::to_string(p.replicas.size()), "1 to 64");
+  }
+  for (const auto& r : p.replicas) {
+    if (!positive(r.sigma0)) throw ParameterError("sigma0", std::to_string(r.sigma0), "sigma0 > 0");
+  }
+  if (p.record_stride < 1)
+    throw ParameterError("record stride", std::to_string(p.record_stride), ">= 1");
+  if (p.phase_bins < 1) throw ParameterError("phase bins", std::to_string(p.phase_bins), ">= 1");
+  if (p.rotor_node < 0) throw ParameterError("rotor node", std::to_string(p.rotor_node), ">= 0");
+  if (!positive(p.energy_tolerance)) {
+    throw ParameterError("energy tolerance", std::to_string(p.energy_tolerance), "> 0");
+  }
+}
+
+nlohmann::json to_json(const SimulationParameters& p) {
+  nlohmann::json j;
+  j["h"] = p.h;
+  j["T"] = p.duration;
+  j["transient"] = p.transient;
+  j["K"] = p.K;
+  j["continue_state"] = p.continue_state;
+  j["replicas"] = nlohmann::json::array();
+  for (const auto& r : p.replicas) {
+    j["replicas"].push_back({{"omega", r.omega}, {"sigma0", r.sigma0}, {"seed", r.seed}});
+  }
+  j["record_stride"] = p.record_stride;
+  j["batches"] = p.batches;
+  j["energy_tolerance"] = p.energy_tolerance;
+  j["node_data"] = p.node_data;
+  j["rotor_node"] = p.rotor_node;
+  j["phase_bins"] = p.phase_bins;
+  j["integrator"] = p.integrator;
+  j["steps"] = nlohmann::json::array();
+  for (const auto& s : p.steps) j["steps"].push_back({{"integrator", s.integrator}, {"h", s.h}});
+  return j;
+}
+
+std::string fingerprint(const SimulationParameters& p, NodeIndex n, EdgeOffset nnz) {
+  nlohmann::json j = to_json(p);
+  j.erase("energy_tolerance");
+  j["n"] = n;
+  j["nnz"] = nnz;
+  return j.dump();
+}
+
+}  // namespace hmfnet
