@@ -5,11 +5,11 @@
 #include <string>
 #include <vector>
 
+#include "analysis/network_summary.hpp"
 #include "network/erdos_renyi.hpp"
 #include "network/stochastic_block.hpp"
 #include "parallel/distributed_network.hpp"
 #include "spectral/dense_spectrum.hpp"
-#include "spectral/network_summary.hpp"
 #include "support/small_networks.hpp"
 #include "support/tolerances.hpp"
 
