@@ -1,9 +1,9 @@
-#include "spectral/dense_spectrum.hpp"
+#include "support/dense_spectrum.hpp"
 
 #include <Eigen/Dense>
 #include <stdexcept>
 
-namespace hmfnet {
+namespace hmfnet::test {
 
 DenseSpectrum dense_spectrum(const Network& network) {
   const NodeIndex n = network.size();
@@ -22,4 +22,4 @@ DenseSpectrum dense_spectrum(const Network& network) {
   return s;
 }
 
-}  // namespace hmfnet
+}  // namespace hmfnet::test
