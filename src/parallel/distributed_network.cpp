@@ -1,9 +1,9 @@
 #include "parallel/distributed_network.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_Core.hpp>
 #include <algorithm>
 #include <utility>
-#include <Tpetra_Core.hpp>
 
 #include "parallel/distributed_network_impl.hpp"
 
@@ -45,13 +45,17 @@ Teuchos::RCP<TpetraMatrix> assemble(const Network& net, const Teuchos::RCP<const
 
 DistributedNetwork::DistributedNetwork(const Network& network) : m_impl(std::make_unique<Impl>()) {
   auto comm = Tpetra::getDefaultComm();
-  m_impl->map = Teuchos::rcp(
-      new TpetraMap(static_cast<Tpetra::global_size_t>(network.size()), 0, comm));
+  m_impl->map =
+      Teuchos::rcp(new TpetraMap(static_cast<Tpetra::global_size_t>(network.size()), 0, comm));
   m_impl->matrix = assemble(network, m_impl->map);
   m_impl->weighted = network.weighted();
 }
 
 DistributedNetwork::~DistributedNetwork() = default;
+
+const DistributedNetwork::Impl& tpetra_impl(const DistributedNetwork& network) {
+  return *network.m_impl;
+}
 
 NodeIndex DistributedNetwork::global_size() const {
   return static_cast<NodeIndex>(m_impl->map->getGlobalNumElements());
@@ -63,10 +67,6 @@ NodeIndex DistributedNetwork::local_size() const {
 
 NodeIndex DistributedNetwork::first_row() const {
   return static_cast<NodeIndex>(m_impl->map->getMinGlobalIndex());
-}
-
-EdgeOffset DistributedNetwork::local_nnz() const {
-  return static_cast<EdgeOffset>(m_impl->matrix->getNodeNumEntries());
 }
 
 EdgeOffset DistributedNetwork::global_nnz() const {
@@ -91,8 +91,8 @@ std::vector<double> DistributedNetwork::gather(const std::vector<double>& x_loca
   const auto first = static_cast<size_t>(first_row());
   for (size_t r = 0; r < x_local.size(); ++r) mine[first + r] = x_local[r];
   // Blocks are disjoint, so a sum reduction assembles the vector exactly (x + 0 = x).
-  Teuchos::reduceAll(*m_impl->map->getComm(), Teuchos::REDUCE_SUM, static_cast<int>(n),
-                     mine.data(), all.data());
+  Teuchos::reduceAll(*m_impl->map->getComm(), Teuchos::REDUCE_SUM, static_cast<int>(n), mine.data(),
+                     all.data());
   return all;
 }
 

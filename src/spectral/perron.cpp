@@ -71,7 +71,7 @@ struct RawPair {
 
 template <class Manager>
 RawPair run_solver(const DistributedNetwork& network, Teuchos::ParameterList params, int nev = 1) {
-  const auto& impl = network.impl();
+  const auto& impl = tpetra_impl(network);
   auto problem = Teuchos::rcp(new Problem(impl.matrix, start_vector(impl)));
   problem->setHermitian(true);
   problem->setNEV(nev);
@@ -111,7 +111,7 @@ double relative_residual(const DistributedNetwork& network, double lambda,
     local += e * e;
   }
   double global = 0.0;
-  Teuchos::reduceAll(*network.impl().map->getComm(), Teuchos::REDUCE_SUM, local,
+  Teuchos::reduceAll(*tpetra_impl(network).map->getComm(), Teuchos::REDUCE_SUM, local,
                      Teuchos::outArg(global));
   return std::sqrt(global) / std::abs(lambda);
 }
@@ -195,7 +195,7 @@ PerronResult perron_eigenpair(const DistributedNetwork& network, const PerronOpt
     // Every rank must agree before the collective residual below (the projected problem is
     // replicated, so they do; the reduction makes it certain).
     int ok = two.ok && !two.u2.empty() ? 1 : 0, all_ok = 0;
-    Teuchos::reduceAll(*network.impl().map->getComm(), Teuchos::REDUCE_MIN, ok,
+    Teuchos::reduceAll(*tpetra_impl(network).map->getComm(), Teuchos::REDUCE_MIN, ok,
                        Teuchos::outArg(all_ok));
     if (all_ok == 1) {
       normalise_perron(two.u2);
