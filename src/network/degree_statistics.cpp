@@ -2,6 +2,9 @@
 
 #include <numeric>
 #include <stdexcept>
+#include <vector>
+
+#include "network/sparse_product.hpp"
 
 namespace hmfnet {
 
@@ -14,15 +17,12 @@ double mean_degree(const Network& network) {
 double degree_correlation(const Network& network) {
   const auto d = network.degrees();
   double sum_d = 0.0, sum_d2 = 0.0, dad = 0.0;
-  for (NodeIndex i = 0; i < network.size(); ++i) {
-    const double di = d[static_cast<std::size_t>(i)];
-    sum_d += di;
-    sum_d2 += di * di;
-    double row = 0.0;
-    for (EdgeOffset k = network.row_begin(i); k < network.row_end(i); ++k) {
-      row += network.weight(k) * d[static_cast<std::size_t>(network.col(k))];
-    }
-    dad += di * row;
+  std::vector<double> ad;
+  multiply(network, d, ad);
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    sum_d += d[i];
+    sum_d2 += d[i] * d[i];
+    dad += d[i] * ad[i];
   }
   if (sum_d2 == 0.0) throw std::invalid_argument("degree correlation of a network with no edges");
   return dad * sum_d / (sum_d2 * sum_d2);

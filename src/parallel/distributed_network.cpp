@@ -16,7 +16,7 @@ Teuchos::RCP<TpetraMatrix> assemble(const Network& net, const Teuchos::RCP<const
   std::vector<size_t> counts(local_rows);
   for (size_t r = 0; r < local_rows; ++r) {
     const auto i = static_cast<NodeIndex>(map->getGlobalElement(static_cast<LocalOrdinal>(r)));
-    counts[r] = static_cast<size_t>(net.row_end(i) - net.row_begin(i));
+    counts[r] = net.row(i).size();
   }
   auto matrix = Teuchos::rcp(new TpetraMatrix(
       map, Teuchos::ArrayView<const size_t>(counts.data(), static_cast<int>(counts.size())),
@@ -28,9 +28,9 @@ Teuchos::RCP<TpetraMatrix> assemble(const Network& net, const Teuchos::RCP<const
     const auto i = static_cast<NodeIndex>(gi);
     cols.clear();
     vals.clear();
-    for (EdgeOffset k = net.row_begin(i); k < net.row_end(i); ++k) {
-      cols.push_back(net.col(k));
-      vals.push_back(net.weight(k));
+    for (const auto [j, w] : net.row(i)) {
+      cols.push_back(j);
+      vals.push_back(w);
     }
     if (cols.empty()) continue;
     const auto len = static_cast<int>(cols.size());

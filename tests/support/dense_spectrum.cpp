@@ -10,8 +10,7 @@ DenseSpectrum dense_spectrum(const Network& network) {
   if (n > 4000) throw std::invalid_argument("dense spectrum refused for N > 4000");
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
   for (NodeIndex i = 0; i < n; ++i)
-    for (EdgeOffset k = network.row_begin(i); k < network.row_end(i); ++k)
-      a(i, network.col(k)) = network.weight(k);
+    for (const auto [j, w] : network.row(i)) a(i, j) = w;
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(a);
   if (solver.info() != Eigen::Success) throw std::runtime_error("Eigen eigensolver failed");
   DenseSpectrum s;
