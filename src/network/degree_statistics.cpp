@@ -1,15 +1,16 @@
 #include "network/degree_statistics.hpp"
 
 #include <numeric>
-#include <stdexcept>
+#include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "network/sparse_product.hpp"
 
 namespace hmfnet {
 
 double mean_degree(const Network& network) {
-  if (network.size() == 0) throw std::invalid_argument("mean degree of an empty network");
+  if (network.size() == 0) throw ParameterError("mean degree: network", "0 nodes", "N >= 1");
   const auto d = network.degrees();
   return std::accumulate(d.begin(), d.end(), 0.0) / static_cast<double>(d.size());
 }
@@ -24,7 +25,9 @@ double degree_correlation(const Network& network) {
     sum_d2 += d[i] * d[i];
     dad += d[i] * ad[i];
   }
-  if (sum_d2 == 0.0) throw std::invalid_argument("degree correlation of a network with no edges");
+  if (sum_d2 == 0.0) {
+    throw ParameterError("degree correlation: network", "no edges", "a network with edges");
+  }
   return dad * sum_d / (sum_d2 * sum_d2);
 }
 

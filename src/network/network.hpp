@@ -76,7 +76,7 @@ class Network {
   Network() = default;
 
   /// Takes ownership of CSR arrays and checks every invariant above (size, ordering, range,
-  /// symmetry, finite positive weights). Throws std::invalid_argument describing the first
+  /// symmetry, finite positive weights). Throws ParameterError describing the first
   /// violation. `weights` empty means a 0/1 network.
   static Network from_csr(NodeIndex n, std::vector<EdgeOffset> row_ptr, std::vector<NodeIndex> cols,
                           std::vector<double> weights = {});

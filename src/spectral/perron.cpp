@@ -137,7 +137,9 @@ Teuchos::ParameterList common_parameters(const PerronOptions& options) {
 }  // namespace
 
 PerronResult perron_eigenpair(const DistributedNetwork& network, const PerronOptions& options) {
-  if (network.global_nnz() == 0) throw std::invalid_argument("spectrum of a network with no edges");
+  if (network.global_nnz() == 0) {
+    throw ParameterError("spectrum: network", "no edges", "a network with edges");
+  }
   const auto start = std::chrono::steady_clock::now();
   // A pair is accepted on the residual we recompute, not on the solver's word: on matrices with
   // very few distinct eigenvalues (e.g. disjoint cliques) the Krylov space becomes invariant

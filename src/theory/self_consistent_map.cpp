@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
+#include <string>
 
+#include "core/error.hpp"
 #include "network/sparse_product.hpp"
 #include "theory/anderson_acceleration.hpp"
 #include "theory/bessel_ratio.hpp"
@@ -25,7 +26,7 @@ std::string solve_status_name(SolveStatus status) {
 
 SelfConsistentMap::SelfConsistentMap(const Network& network, double offset)
     : m_network(network), m_offset(offset), m_v(static_cast<std::size_t>(network.size())) {
-  if (network.size() < 1) throw std::invalid_argument("self-consistent map: empty network");
+  if (network.size() < 1) throw ParameterError("self-consistent map: network", "0 nodes", "N >= 1");
 }
 
 void SelfConsistentMap::apply(const std::vector<double>& r, double eta, std::vector<double>& r_out,
@@ -84,10 +85,10 @@ void require_closed_zero_set(const Network& network, const std::vector<double>& 
     if (r[static_cast<std::size_t>(i)] != 0.0) continue;
     for (const RowEntry entry : network.row(i)) {
       if (r[static_cast<std::size_t>(entry.col)] != 0.0) {
-        throw std::invalid_argument("self-consistent map: the guess is 0 at node " +
-                                    std::to_string(i) + " but not at its neighbour " +
-                                    std::to_string(entry.col) +
-                                    " (zeros must cover whole components)");
+        throw ParameterError("self-consistent map: guess",
+                             "0 at node " + std::to_string(i) + " but not at its neighbour " +
+                                 std::to_string(entry.col),
+                             "zeros that cover whole components");
       }
     }
   }
@@ -124,9 +125,12 @@ class LogVariables {
 MapFixedPoint iterate_self_consistent_map(const SelfConsistentMap& map, std::vector<double> r,
                                           double eta, const SelfConsistentOptions& options) {
   const auto n = static_cast<std::size_t>(map.size());
-  if (r.size() != n) throw std::invalid_argument("self-consistent map: guess has the wrong size");
+  if (r.size() != n) {
+    throw ParameterError("self-consistent map: guess", std::to_string(r.size()) + " entries",
+                         std::to_string(n) + " (one per node)");
+  }
   if (!(eta > 0.0) || !std::isfinite(eta)) {
-    throw std::invalid_argument("self-consistent map: guess needs 0 < eta < inf");
+    throw ParameterError("self-consistent map: guess eta", std::to_string(eta), "0 < eta < inf");
   }
   require_closed_zero_set(map.network(), r);
   const LogVariables variables(map.network(), r);

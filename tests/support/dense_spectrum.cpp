@@ -2,12 +2,17 @@
 
 #include <Eigen/Dense>
 #include <stdexcept>
+#include <string>
+
+#include "core/error.hpp"
 
 namespace hmfnet::test {
 
 DenseSpectrum dense_spectrum(const Network& network) {
   const NodeIndex n = network.size();
-  if (n > 4000) throw std::invalid_argument("dense spectrum refused for N > 4000");
+  if (n > 4000) {
+    throw ParameterError("dense spectrum: N", std::to_string(n), "N <= 4000 (O(N^3) work)");
+  }
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
   for (NodeIndex i = 0; i < n; ++i)
     for (const auto [j, w] : network.row(i)) a(i, j) = w;
