@@ -11,7 +11,7 @@
 //   - a star: bipartite (-lambda is an eigenvalue), and each leaf has one neighbour, so its local
 //     field is a single rotor, not an average.
 // Claims checked: each of these is detected and reported by `hmfnet spectrum`'s summary
-//   (spectral/network_summary.hpp: near-degenerate lambda, connected components, bipartite),
+//   (analysis/network_summary.hpp: near-degenerate lambda, connected components, bipartite),
 //   and the ER control is not flagged. The gaps are measured and reported, not judged: they are
 //   what a user of the theory on such a network should expect.
 // Protocol: as simulation_vs_theory.cpp: every K from the incoherent state, the theory at each
@@ -34,6 +34,7 @@
 #include <utility>
 #include <vector>
 
+#include "analysis/network_summary.hpp"
 #include "dynamics/network_force.hpp"
 #include "dynamics/simulation.hpp"
 #include "network/degree_statistics.hpp"
@@ -41,11 +42,10 @@
 #include "network/stochastic_block.hpp"
 #include "parallel/distributed_network.hpp"
 #include "parallel/parallel_session.hpp"
-#include "spectral/network_summary.hpp"
 #include "spectral/perron.hpp"
 #include "support/claim_check.hpp"
-#include "support/work_account.hpp"
 #include "support/run_variance.hpp"
+#include "support/work_account.hpp"
 #include "theory/critical_coupling.hpp"
 #include "theory/self_consistent.hpp"
 

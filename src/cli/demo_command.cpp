@@ -7,6 +7,7 @@
 #include <iomanip>
 #include <iostream>
 
+#include "analysis/network_summary.hpp"
 #include "cli/command_options.hpp"
 #include "cli/commands.hpp"
 #include "cli/validators.hpp"
@@ -16,7 +17,6 @@
 #include "network/degree_statistics.hpp"
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
-#include "spectral/network_summary.hpp"
 #include "theory/critical_coupling.hpp"
 #include "theory/onset_amplitude.hpp"
 #include "theory/self_consistent.hpp"

@@ -3,12 +3,12 @@
 #include <iomanip>
 #include <iostream>
 
+#include "analysis/network_summary.hpp"
 #include "cli/command_options.hpp"
 #include "cli/commands.hpp"
 #include "cli/read_flags.hpp"
 #include "cli/validators.hpp"
 #include "parallel/distributed_network.hpp"
-#include "spectral/network_summary.hpp"
 
 namespace hmfnet::cli {
 

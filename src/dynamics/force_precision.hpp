@@ -3,8 +3,9 @@
 // float32 storage and accumulation of the gathered [cos, sin] table. Chosen per run
 // (`simulate --precision`); the work-precision charts (verification/work_precision.cpp) show
 // what each costs and where float32 stops being adequate.
-#include <stdexcept>
 #include <string>
+
+#include "core/error.hpp"
 
 namespace hmfnet {
 
@@ -18,7 +19,7 @@ inline const char* to_string(ForcePrecision p) {
 inline ForcePrecision parse_force_precision(const std::string& name) {
   if (name == "float64") return ForcePrecision::float64;
   if (name == "float32") return ForcePrecision::float32;
-  throw std::invalid_argument("force precision '" + name + "': allowed float64, float32");
+  throw ParameterError("force precision", "'" + name + "'", "float64, float32");
 }
 
 }  // namespace hmfnet

@@ -1,8 +1,9 @@
 #include "dynamics/network_force.hpp"
 
 #include <cmath>
-#include <stdexcept>
+#include <string>
 
+#include "core/error.hpp"
 #include "dynamics/ordered_sum.hpp"
 
 namespace hmfnet {
@@ -191,7 +192,7 @@ void NetworkForce::evaluate(const RotorState& state, std::vector<double>& g, For
   m_y.resize(2 * cells);
   m_abs_y.resize(cells);
   m_coupling.resize(cells);
-  if (nb > 64) throw std::invalid_argument("at most 64 replicas per pass");
+  if (nb > 64) throw ParameterError("replicas per pass", std::to_string(nb), "1 to 64");
   if (m_precision == ForcePrecision::float64) {
     run_rows(m_adjacency.weights.empty() ? nullptr : m_adjacency.weights.data(), column_cs,
              state.rows, nb, g);

@@ -9,7 +9,9 @@ namespace hmfnet {
 
 namespace {
 
-bool close(double x, double y) { return std::abs(x - y) <= 1e-12 * std::max(std::abs(x), std::abs(y)); }
+bool close(double x, double y) {
+  return std::abs(x - y) <= 1e-12 * std::max(std::abs(x), std::abs(y));
+}
 
 }  // namespace
 
@@ -23,7 +25,7 @@ std::optional<RankOneStructure> detect_rank_one(const Network& net) {
   s.diagonal = diagonal;
   s.a.assign(static_cast<std::size_t>(n), 1.0);
   for (NodeIndex i = 0; i < n; ++i) {
-    if (net.row_end(i) - net.row_begin(i) != full) return std::nullopt;
+    if (static_cast<EdgeOffset>(net.row(i).size()) != full) return std::nullopt;
     if (diagonal && net.weighted()) {
       // Row i holds column i at position i (a full, sorted row).
       s.a[static_cast<std::size_t>(i)] = std::sqrt(net.weight(net.row_begin(i) + i));
@@ -31,9 +33,9 @@ std::optional<RankOneStructure> detect_rank_one(const Network& net) {
   }
   if (!net.weighted()) return s;
   for (NodeIndex i = 0; i < n; ++i) {
-    for (EdgeOffset k = net.row_begin(i); k < net.row_end(i); ++k) {
-      const double expected = s.a[static_cast<std::size_t>(i)] * s.a[static_cast<std::size_t>(net.col(k))];
-      if (!close(net.weight(k), expected)) return std::nullopt;
+    for (const auto [j, w] : net.row(i)) {
+      const double expected = s.a[static_cast<std::size_t>(i)] * s.a[static_cast<std::size_t>(j)];
+      if (!close(w, expected)) return std::nullopt;
     }
   }
   return s;

@@ -22,9 +22,8 @@ ReadResult read_edge_list(const std::string& path, const ReadOptions& options) {
   }
   TextScanner in(path);
   const std::int64_t base = options.edge_list_base;
-  const std::int64_t limit = options.edge_list_nodes > 0
-                                 ? options.edge_list_nodes
-                                 : std::numeric_limits<NodeIndex>::max();
+  const std::int64_t limit =
+      options.edge_list_nodes > 0 ? options.edge_list_nodes : std::numeric_limits<NodeIndex>::max();
   std::vector<MatrixEntry> entries;
   std::vector<std::string_view> t;
   std::string_view line;
@@ -63,11 +62,11 @@ ReadResult read_edge_list(const std::string& path, const ReadOptions& options) {
       largest = std::max(largest, ends[k] - base);
     }
     const double w = fields == 3 ? in.parse_real(t[2], "weight") : 1.0;
-    entries.push_back({static_cast<NodeIndex>(ends[0] - base), static_cast<NodeIndex>(ends[1] - base),
-                       w, in.line_number()});
+    entries.push_back({static_cast<NodeIndex>(ends[0] - base),
+                       static_cast<NodeIndex>(ends[1] - base), w, in.line_number()});
   }
-  NodeIndex n = options.edge_list_nodes > 0 ? options.edge_list_nodes
-                                            : static_cast<NodeIndex>(largest + 1);
+  NodeIndex n =
+      options.edge_list_nodes > 0 ? options.edge_list_nodes : static_cast<NodeIndex>(largest + 1);
   if (options.edge_list_nodes == 0 && declared_nodes > 0) {
     if (declared_nodes <= largest) {
       throw InputError(path, 0,
@@ -84,9 +83,9 @@ ReadResult read_edge_list(const std::string& path, const ReadOptions& options) {
                          " without an explicit node count (mostly isolated nodes; see "
                          "io/node_count_limit.hpp)");
   }
-  BuildResult built = build_network(path, n, std::move(entries),
-                                    {EntrySymmetry::symmetric, AsymmetryPolicy::reject,
-                                     options.edge_list_base});
+  BuildResult built =
+      build_network(path, n, std::move(entries),
+                    {EntrySymmetry::symmetric, AsymmetryPolicy::reject, options.edge_list_base});
   return {std::move(built.network), std::move(built.warnings)};
 }
 
@@ -100,12 +99,11 @@ void write_edge_list(const std::string& path, const Network& network, const std:
     for (std::string c; std::getline(lines, c);) out << "# " << c << '\n';
     char buffer[32];
     for (NodeIndex i = 0; i < network.size(); ++i) {
-      for (EdgeOffset k = network.row_begin(i); k < network.row_end(i); ++k) {
-        const NodeIndex j = network.col(k);
+      for (const auto [j, w] : network.row(i)) {
         if (j < i) continue;
         out << i << ' ' << j;
         if (network.weighted()) {
-          std::snprintf(buffer, sizeof buffer, " %.17g", network.weight(k));
+          std::snprintf(buffer, sizeof buffer, " %.17g", w);
           out << buffer;
         }
         out << '\n';

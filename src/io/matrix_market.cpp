@@ -44,14 +44,21 @@ Header parse_header(TextScanner& in) {
   }
   Header h;
   const std::string field = lower(t[3]);
-  if (field == "pattern") h.field = Field::pattern;
-  else if (field == "integer") h.field = Field::integer;
-  else if (field == "real") h.field = Field::real;
-  else in.fail("field '" + std::string(t[3]) + "' is not supported (pattern, integer, real)");
+  if (field == "pattern")
+    h.field = Field::pattern;
+  else if (field == "integer")
+    h.field = Field::integer;
+  else if (field == "real")
+    h.field = Field::real;
+  else
+    in.fail("field '" + std::string(t[3]) + "' is not supported (pattern, integer, real)");
   const std::string sym = lower(t[4]);
-  if (sym == "symmetric") h.symmetry = EntrySymmetry::symmetric;
-  else if (sym == "general") h.symmetry = EntrySymmetry::general;
-  else in.fail("symmetry '" + std::string(t[4]) + "' is not supported (symmetric, general)");
+  if (sym == "symmetric")
+    h.symmetry = EntrySymmetry::symmetric;
+  else if (sym == "general")
+    h.symmetry = EntrySymmetry::general;
+  else
+    in.fail("symmetry '" + std::string(t[4]) + "' is not supported (symmetric, general)");
   return h;
 }
 
@@ -143,12 +150,11 @@ void write_matrix_market(const std::string& path, const Network& network,
     out << network.size() << ' ' << network.size() << ' ' << network.edges() << '\n';
     char buffer[32];
     for (NodeIndex i = 0; i < network.size(); ++i) {
-      for (EdgeOffset k = network.row_begin(i); k < network.row_end(i); ++k) {
-        const NodeIndex j = network.col(k);
+      for (const auto [j, w] : network.row(i)) {
         if (j > i) break;  // lower triangle, rows sorted
         out << i + 1 << ' ' << j + 1;
         if (network.weighted()) {
-          std::snprintf(buffer, sizeof buffer, " %.17g", network.weight(k));
+          std::snprintf(buffer, sizeof buffer, " %.17g", w);
           out << buffer;
         }
         out << '\n';

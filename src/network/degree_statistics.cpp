@@ -1,12 +1,16 @@
 #include "network/degree_statistics.hpp"
 
 #include <numeric>
-#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "network/sparse_product.hpp"
 
 namespace hmfnet {
 
 double mean_degree(const Network& network) {
-  if (network.size() == 0) throw std::invalid_argument("mean degree of an empty network");
+  if (network.size() == 0) throw ParameterError("mean degree: network", "0 nodes", "N >= 1");
   const auto d = network.degrees();
   return std::accumulate(d.begin(), d.end(), 0.0) / static_cast<double>(d.size());
 }
@@ -14,17 +18,16 @@ double mean_degree(const Network& network) {
 double degree_correlation(const Network& network) {
   const auto d = network.degrees();
   double sum_d = 0.0, sum_d2 = 0.0, dad = 0.0;
-  for (NodeIndex i = 0; i < network.size(); ++i) {
-    const double di = d[static_cast<std::size_t>(i)];
-    sum_d += di;
-    sum_d2 += di * di;
-    double row = 0.0;
-    for (EdgeOffset k = network.row_begin(i); k < network.row_end(i); ++k) {
-      row += network.weight(k) * d[static_cast<std::size_t>(network.col(k))];
-    }
-    dad += di * row;
+  std::vector<double> ad;
+  multiply(network, d, ad);
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    sum_d += d[i];
+    sum_d2 += d[i] * d[i];
+    dad += d[i] * ad[i];
   }
-  if (sum_d2 == 0.0) throw std::invalid_argument("degree correlation of a network with no edges");
+  if (sum_d2 == 0.0) {
+    throw ParameterError("degree correlation: network", "no edges", "a network with edges");
+  }
   return dad * sum_d / (sum_d2 * sum_d2);
 }
 

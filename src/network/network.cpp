@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
+#include <string>
+
+#include "core/error.hpp"
 
 namespace hmfnet {
 
@@ -28,8 +30,8 @@ std::string check_shape(NodeIndex n, const std::vector<EdgeOffset>& row_ptr,
                         const std::vector<NodeIndex>& cols, const std::vector<double>& weights) {
   if (n < 0) return "negative node count " + std::to_string(n);
   if (row_ptr.size() != idx(n) + 1) {
-    return "row_ptr has " + std::to_string(row_ptr.size()) + " entries, expected n+1 = " +
-           std::to_string(idx(n) + 1);
+    return "row_ptr has " + std::to_string(row_ptr.size()) +
+           " entries, expected n+1 = " + std::to_string(idx(n) + 1);
   }
   if (row_ptr.front() != 0) return "row_ptr[0] = " + std::to_string(row_ptr.front()) + ", not 0";
   if (row_ptr.back() != static_cast<EdgeOffset>(cols.size())) {
@@ -102,10 +104,13 @@ std::string Network::check_csr(NodeIndex n, const std::vector<EdgeOffset>& row_p
   return why;
 }
 
-Network Network::from_csr(NodeIndex n, std::vector<EdgeOffset> row_ptr,
-                          std::vector<NodeIndex> cols, std::vector<double> weights) {
+Network Network::from_csr(NodeIndex n, std::vector<EdgeOffset> row_ptr, std::vector<NodeIndex> cols,
+                          std::vector<double> weights) {
   const std::string why = check_csr(n, row_ptr, cols, weights);
-  if (!why.empty()) throw std::invalid_argument("invalid network: " + why);
+  if (!why.empty()) {
+    throw ParameterError("CSR network", why,
+                         "sorted in-range columns, symmetric, finite weights > 0");
+  }
   return from_trusted_csr(n, std::move(row_ptr), std::move(cols), std::move(weights));
 }
 
@@ -126,8 +131,8 @@ Network Network::from_undirected_edges(NodeIndex n,
   net.m_row_ptr.assign(idx(n) + 1, 0);
   for (const auto& [u, v] : edges) {
     if (u < 0 || u >= n || v < 0 || v >= n) {
-      throw std::invalid_argument("edge " + entry_name(u, v) + " out of range for n = " +
-                                  std::to_string(n));
+      throw ParameterError("edge " + entry_name(u, v), "node index out of range",
+                           "0 <= u, v < n = " + std::to_string(n));
     }
     ++net.m_row_ptr[idx(u) + 1];
     if (u != v) ++net.m_row_ptr[idx(v) + 1];
@@ -144,7 +149,8 @@ Network Network::from_undirected_edges(NodeIndex n,
     const auto last = net.m_cols.begin() + net.row_end(i);
     if (!std::is_sorted(first, last)) std::sort(first, last);
     if (std::adjacent_find(first, last) != last) {
-      throw std::invalid_argument("edge list repeats a pair at node " + std::to_string(i));
+      throw ParameterError("edge list", "repeats a pair at node " + std::to_string(i),
+                           "each pair once, in either orientation");
     }
   }
   return net;

@@ -9,7 +9,9 @@
 //  - the matrix is stored in full (both (i,j) and (j,i)); a self-loop A_nn is one stored entry;
 //  - degree d_n = sum_m A_nm (weighted; a self-loop counted once);
 //  - edges() counts unordered pairs, a self-loop once: nnz = 2 (edges - self_loops) + self_loops.
+#include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,15 +21,65 @@ namespace hmfnet {
 using NodeIndex = std::int32_t;
 using EdgeOffset = std::int64_t;
 
+/// One stored entry A_ij of a row: its column j and weight A_ij (1.0 in a 0/1 network).
+struct RowEntry {
+  NodeIndex col;
+  double weight;
+};
+
+/// The stored entries of one row, in storage order (ascending column), as a range:
+/// `for (auto [j, w] : network.row(i))`. A sum over it adds in the same order as a CSR loop
+/// over row_begin(i)..row_end(i). Borrows the network's arrays: valid while the network lives
+/// unchanged.
+class RowView {
+ public:
+  class iterator {
+   public:
+    using iterator_category = std::forward_iterator_tag;
+    using value_type = RowEntry;
+    using difference_type = std::ptrdiff_t;
+    using pointer = void;
+    using reference = RowEntry;
+
+    iterator(const NodeIndex* col, const double* weight) : m_col(col), m_weight(weight) {}
+    RowEntry operator*() const { return {*m_col, m_weight != nullptr ? *m_weight : 1.0}; }
+    iterator& operator++() {
+      ++m_col;
+      if (m_weight != nullptr) ++m_weight;
+      return *this;
+    }
+    bool operator==(const iterator& other) const { return m_col == other.m_col; }
+    bool operator!=(const iterator& other) const { return m_col != other.m_col; }
+
+   private:
+    const NodeIndex* m_col;
+    const double* m_weight;  ///< nullptr: a 0/1 network, every weight 1.0
+  };
+
+  RowView(const NodeIndex* cols, const double* weights, std::size_t count)
+      : m_cols(cols), m_weights(weights), m_count(count) {}
+  iterator begin() const { return {m_cols, m_weights}; }
+  iterator end() const {
+    return {m_cols + m_count, m_weights != nullptr ? m_weights + m_count : nullptr};
+  }
+  std::size_t size() const { return m_count; }
+  bool empty() const { return m_count == 0; }
+
+ private:
+  const NodeIndex* m_cols;
+  const double* m_weights;
+  std::size_t m_count;
+};
+
 class Network {
  public:
   Network() = default;
 
   /// Takes ownership of CSR arrays and checks every invariant above (size, ordering, range,
-  /// symmetry, finite positive weights). Throws std::invalid_argument describing the first
+  /// symmetry, finite positive weights). Throws ParameterError describing the first
   /// violation. `weights` empty means a 0/1 network.
-  static Network from_csr(NodeIndex n, std::vector<EdgeOffset> row_ptr,
-                          std::vector<NodeIndex> cols, std::vector<double> weights = {});
+  static Network from_csr(NodeIndex n, std::vector<EdgeOffset> row_ptr, std::vector<NodeIndex> cols,
+                          std::vector<double> weights = {});
 
   /// As from_csr, without the O(nnz log d) checks: for generators whose output satisfies the
   /// invariants by construction (their tests run check_csr on what they produce).
@@ -57,6 +109,12 @@ class Network {
   NodeIndex col(EdgeOffset k) const { return m_cols[static_cast<std::size_t>(k)]; }
   double weight(EdgeOffset k) const {
     return m_weights.empty() ? 1.0 : m_weights[static_cast<std::size_t>(k)];
+  }
+  /// Row i's stored entries (column, weight) in ascending column order; see RowView.
+  RowView row(NodeIndex i) const {
+    const auto first = static_cast<std::size_t>(row_begin(i));
+    const auto count = static_cast<std::size_t>(row_end(i) - row_begin(i));
+    return {m_cols.data() + first, m_weights.empty() ? nullptr : m_weights.data() + first, count};
   }
 
   EdgeOffset self_loops() const;

@@ -31,8 +31,8 @@ EdgeSet edge_set(const Network& net) {
   EdgeSet s;
   s.edges.reserve(static_cast<std::size_t>(net.edges()));
   for (NodeIndex i = 0; i < net.size(); ++i)
-    for (EdgeOffset k = net.row_begin(i); k < net.row_end(i); ++k)
-      if (net.col(k) > i) s.edges.emplace_back(i, net.col(k));
+    for (const RowEntry entry : net.row(i))
+      if (entry.col > i) s.edges.emplace_back(i, entry.col);
   s.present.reserve(2 * s.edges.size());
   for (const auto& [u, v] : s.edges) s.present.insert(key(u, v));
   return s;
@@ -50,7 +50,8 @@ void check_input(const Network& network, const RewiringParameters& p) {
     throw ParameterError("network", "weighted", "rewiring needs an unweighted network");
   }
   if (network.self_loops() > 0) {
-    throw ParameterError("network", "has self-loops", "rewiring needs a network without self-loops");
+    throw ParameterError("network", "has self-loops",
+                         "rewiring needs a network without self-loops");
   }
   if (network.edges() < 2) throw ParameterError("network", "fewer than 2 edges", ">= 2 edges");
   if (!(p.target_rho > 0.0) || !std::isfinite(p.target_rho)) {

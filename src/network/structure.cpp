@@ -20,8 +20,8 @@ Components connected_components(const Network& network) {
     c.label[idx(start)] = c.count;
     for (std::size_t head = 0; head < queue.size(); ++head) {
       const NodeIndex i = queue[head];
-      for (EdgeOffset k = network.row_begin(i); k < network.row_end(i); ++k) {
-        const NodeIndex j = network.col(k);
+      for (const RowEntry entry : network.row(i)) {
+        const NodeIndex j = entry.col;
         if (c.label[idx(j)] < 0) {
           c.label[idx(j)] = c.count;
           queue.push_back(j);
@@ -43,8 +43,8 @@ bool is_bipartite(const Network& network) {
     queue.assign(1, start);
     for (std::size_t head = 0; head < queue.size(); ++head) {
       const NodeIndex i = queue[head];
-      for (EdgeOffset k = network.row_begin(i); k < network.row_end(i); ++k) {
-        const NodeIndex j = network.col(k);
+      for (const RowEntry entry : network.row(i)) {
+        const NodeIndex j = entry.col;
         if (colour[idx(j)] < 0) {
           colour[idx(j)] = static_cast<signed char>(1 - colour[idx(i)]);
           queue.push_back(j);

@@ -1,9 +1,9 @@
 #include "parallel/distributed_network.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_Core.hpp>
 #include <algorithm>
 #include <utility>
-#include <Tpetra_Core.hpp>
 
 #include "parallel/distributed_network_impl.hpp"
 
@@ -16,7 +16,7 @@ Teuchos::RCP<TpetraMatrix> assemble(const Network& net, const Teuchos::RCP<const
   std::vector<size_t> counts(local_rows);
   for (size_t r = 0; r < local_rows; ++r) {
     const auto i = static_cast<NodeIndex>(map->getGlobalElement(static_cast<LocalOrdinal>(r)));
-    counts[r] = static_cast<size_t>(net.row_end(i) - net.row_begin(i));
+    counts[r] = net.row(i).size();
   }
   auto matrix = Teuchos::rcp(new TpetraMatrix(
       map, Teuchos::ArrayView<const size_t>(counts.data(), static_cast<int>(counts.size())),
@@ -28,9 +28,9 @@ Teuchos::RCP<TpetraMatrix> assemble(const Network& net, const Teuchos::RCP<const
     const auto i = static_cast<NodeIndex>(gi);
     cols.clear();
     vals.clear();
-    for (EdgeOffset k = net.row_begin(i); k < net.row_end(i); ++k) {
-      cols.push_back(net.col(k));
-      vals.push_back(net.weight(k));
+    for (const auto [j, w] : net.row(i)) {
+      cols.push_back(j);
+      vals.push_back(w);
     }
     if (cols.empty()) continue;
     const auto len = static_cast<int>(cols.size());
@@ -45,13 +45,17 @@ Teuchos::RCP<TpetraMatrix> assemble(const Network& net, const Teuchos::RCP<const
 
 DistributedNetwork::DistributedNetwork(const Network& network) : m_impl(std::make_unique<Impl>()) {
   auto comm = Tpetra::getDefaultComm();
-  m_impl->map = Teuchos::rcp(
-      new TpetraMap(static_cast<Tpetra::global_size_t>(network.size()), 0, comm));
+  m_impl->map =
+      Teuchos::rcp(new TpetraMap(static_cast<Tpetra::global_size_t>(network.size()), 0, comm));
   m_impl->matrix = assemble(network, m_impl->map);
   m_impl->weighted = network.weighted();
 }
 
 DistributedNetwork::~DistributedNetwork() = default;
+
+const DistributedNetwork::Impl& tpetra_impl(const DistributedNetwork& network) {
+  return *network.m_impl;
+}
 
 NodeIndex DistributedNetwork::global_size() const {
   return static_cast<NodeIndex>(m_impl->map->getGlobalNumElements());
@@ -63,10 +67,6 @@ NodeIndex DistributedNetwork::local_size() const {
 
 NodeIndex DistributedNetwork::first_row() const {
   return static_cast<NodeIndex>(m_impl->map->getMinGlobalIndex());
-}
-
-EdgeOffset DistributedNetwork::local_nnz() const {
-  return static_cast<EdgeOffset>(m_impl->matrix->getNodeNumEntries());
 }
 
 EdgeOffset DistributedNetwork::global_nnz() const {
@@ -91,8 +91,8 @@ std::vector<double> DistributedNetwork::gather(const std::vector<double>& x_loca
   const auto first = static_cast<size_t>(first_row());
   for (size_t r = 0; r < x_local.size(); ++r) mine[first + r] = x_local[r];
   // Blocks are disjoint, so a sum reduction assembles the vector exactly (x + 0 = x).
-  Teuchos::reduceAll(*m_impl->map->getComm(), Teuchos::REDUCE_SUM, static_cast<int>(n),
-                     mine.data(), all.data());
+  Teuchos::reduceAll(*m_impl->map->getComm(), Teuchos::REDUCE_SUM, static_cast<int>(n), mine.data(),
+                     all.data());
   return all;
 }
 

@@ -24,8 +24,7 @@ class DistributedNetwork {
   /// Rows owned here: global indices [first_row(), first_row() + local_size()).
   NodeIndex local_size() const;
   NodeIndex first_row() const;
-  /// Stored entries owned here and over all ranks.
-  EdgeOffset local_nnz() const;
+  /// Stored entries over all ranks.
   EdgeOffset global_nnz() const;
 
   /// y = A x on the rows owned here; x and y hold this rank's entries (local_size() each).
@@ -55,10 +54,14 @@ class DistributedNetwork {
   /// node a column): then import_columns is the identity and callers may skip it.
   bool columns_are_owned_rows() const;
 
+  /// The Tpetra types, defined in distributed_network_impl.hpp (an internal header).
   struct Impl;
-  const Impl& impl() const { return *m_impl; }
 
  private:
+  // The Tpetra matrix reaches only the .cpp files that include the internal header (the
+  // eigensolver hands it to Anasazi), through this accessor defined there.
+  friend const Impl& tpetra_impl(const DistributedNetwork& network);
+
   std::unique_ptr<Impl> m_impl;
 };
 

@@ -28,4 +28,8 @@ struct DistributedNetwork::Impl {
   Teuchos::RCP<TpetraMultiVector> import_source, import_target;
 };
 
+/// The Tpetra matrix and map behind a DistributedNetwork, for the Trilinos code that needs them
+/// (spectral/perron.cpp hands the matrix to Anasazi).
+const DistributedNetwork::Impl& tpetra_impl(const DistributedNetwork& network);
+
 }  // namespace hmfnet

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstddef>
 
+#include "network/sparse_product.hpp"
+
 namespace hmfnet {
 
 ComponentRadii component_radii(const Network& network, const Components& components,
@@ -12,21 +14,18 @@ ComponentRadii component_radii(const Network& network, const Components& compone
   const auto count = static_cast<std::size_t>(components.count);
   const auto label = [&](std::size_t i) { return static_cast<std::size_t>(components.label[i]); };
   const std::vector<double> degrees = network.degrees();
-  std::vector<double> x(n), y(n), norm2(count), rayleigh(count);
+  std::vector<double> x(n), y(n), ax(n), norm2(count), rayleigh(count);
   for (std::size_t i = 0; i < n; ++i) x[i] = degrees[i] + 1.0;
   ComponentRadii out;
   out.lambda.assign(count, 0.0);
   for (int it = 1; it <= max_iterations; ++it) {
     std::fill(norm2.begin(), norm2.end(), 0.0);
     std::fill(rayleigh.begin(), rayleigh.end(), 0.0);
-    for (NodeIndex i = 0; i < network.size(); ++i) {
-      double ax = 0.0;
-      for (EdgeOffset k = network.row_begin(i); k < network.row_end(i); ++k)
-        ax += network.weight(k) * x[static_cast<std::size_t>(network.col(k))];
-      const auto u = static_cast<std::size_t>(i);
-      y[u] = ax + x[u];
+    multiply(network, x, ax);
+    for (std::size_t u = 0; u < n; ++u) {
+      y[u] = ax[u] + x[u];
       norm2[label(u)] += x[u] * x[u];
-      rayleigh[label(u)] += x[u] * ax;
+      rayleigh[label(u)] += x[u] * ax[u];
     }
     double change = 0.0;
     for (std::size_t c = 0; c < count; ++c) {

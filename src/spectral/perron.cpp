@@ -71,7 +71,7 @@ struct RawPair {
 
 template <class Manager>
 RawPair run_solver(const DistributedNetwork& network, Teuchos::ParameterList params, int nev = 1) {
-  const auto& impl = network.impl();
+  const auto& impl = tpetra_impl(network);
   auto problem = Teuchos::rcp(new Problem(impl.matrix, start_vector(impl)));
   problem->setHermitian(true);
   problem->setNEV(nev);
@@ -111,7 +111,7 @@ double relative_residual(const DistributedNetwork& network, double lambda,
     local += e * e;
   }
   double global = 0.0;
-  Teuchos::reduceAll(*network.impl().map->getComm(), Teuchos::REDUCE_SUM, local,
+  Teuchos::reduceAll(*tpetra_impl(network).map->getComm(), Teuchos::REDUCE_SUM, local,
                      Teuchos::outArg(global));
   return std::sqrt(global) / std::abs(lambda);
 }
@@ -137,7 +137,9 @@ Teuchos::ParameterList common_parameters(const PerronOptions& options) {
 }  // namespace
 
 PerronResult perron_eigenpair(const DistributedNetwork& network, const PerronOptions& options) {
-  if (network.global_nnz() == 0) throw std::invalid_argument("spectrum of a network with no edges");
+  if (network.global_nnz() == 0) {
+    throw ParameterError("spectrum: network", "no edges", "a network with edges");
+  }
   const auto start = std::chrono::steady_clock::now();
   // A pair is accepted on the residual we recompute, not on the solver's word: on matrices with
   // very few distinct eigenvalues (e.g. disjoint cliques) the Krylov space becomes invariant
@@ -195,7 +197,7 @@ PerronResult perron_eigenpair(const DistributedNetwork& network, const PerronOpt
     // Every rank must agree before the collective residual below (the projected problem is
     // replicated, so they do; the reduction makes it certain).
     int ok = two.ok && !two.u2.empty() ? 1 : 0, all_ok = 0;
-    Teuchos::reduceAll(*network.impl().map->getComm(), Teuchos::REDUCE_MIN, ok,
+    Teuchos::reduceAll(*tpetra_impl(network).map->getComm(), Teuchos::REDUCE_MIN, ok,
                        Teuchos::outArg(all_ok));
     if (all_ok == 1) {
       normalise_perron(two.u2);

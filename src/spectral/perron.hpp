@@ -35,7 +35,7 @@ struct PerronResult {
 };
 
 /// Collective. Throws ConvergenceError if Anasazi does not converge (never returns an
-/// unconverged pair), std::invalid_argument for a network without edges.
+/// unconverged pair), ParameterError for a network without edges.
 PerronResult perron_eigenpair(const DistributedNetwork& network, const PerronOptions& options = {});
 
 }  // namespace hmfnet

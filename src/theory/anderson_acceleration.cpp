@@ -2,7 +2,9 @@
 
 #include <Eigen/Dense>
 #include <cmath>
-#include <stdexcept>
+#include <string>
+
+#include "core/error.hpp"
 
 namespace hmfnet {
 
@@ -12,14 +14,22 @@ using Vector = Eigen::VectorXd;
 using ConstMap = Eigen::Map<const Eigen::VectorXd>;
 
 void check(const FixedPointMap& map, const std::vector<double>& x0, const AndersonOptions& o) {
-  if (!map) throw std::invalid_argument("anderson_fixed_point: no map");
-  if (x0.empty()) throw std::invalid_argument("anderson_fixed_point: empty initial guess");
+  if (!map) throw ParameterError("anderson_fixed_point: map", "empty", "a callable map");
+  if (x0.empty()) {
+    throw ParameterError("anderson_fixed_point: initial guess", "empty", "at least one entry");
+  }
   if (o.memory < 0 || !(o.damping > 0.0 && o.damping <= 1.0) || !(o.tolerance > 0.0) ||
       o.max_iterations < 1 || !(o.restart_growth > 1.0) || !(o.max_step > 0.0) ||
       o.stagnation_window < 1) {
-    throw std::invalid_argument(
-        "anderson_fixed_point: need memory >= 0, 0 < damping <= 1, tolerance > 0, "
-        "max_iterations >= 1, restart_growth > 1, max_step > 0, stagnation_window >= 1");
+    throw ParameterError(
+        "anderson_fixed_point: options",
+        "memory " + std::to_string(o.memory) + ", damping " + std::to_string(o.damping) +
+            ", tolerance " + std::to_string(o.tolerance) + ", max_iterations " +
+            std::to_string(o.max_iterations) + ", restart_growth " +
+            std::to_string(o.restart_growth) + ", max_step " + std::to_string(o.max_step) +
+            ", stagnation_window " + std::to_string(o.stagnation_window),
+        "memory >= 0, 0 < damping <= 1, tolerance > 0, max_iterations >= 1, restart_growth > 1, "
+        "max_step > 0, stagnation_window >= 1");
   }
 }
 

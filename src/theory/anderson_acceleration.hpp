@@ -54,7 +54,7 @@ struct FixedPointResult {
   bool damped_fallback = false;  ///< stagnation ended the extrapolation (see stagnation_window)
 };
 
-/// Throws std::invalid_argument for bad options, an empty map or an empty x0.
+/// Throws ParameterError for bad options, an empty map or an empty x0.
 FixedPointResult anderson_fixed_point(const FixedPointMap& map, std::vector<double> x0,
                                       const AndersonOptions& options = {});
 

@@ -116,8 +116,7 @@ DispersionRoot solve_dispersion(const Network& network, double K, const std::vec
   }
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
   for (NodeIndex i = 0; i < n; ++i)
-    for (EdgeOffset k = network.row_begin(i); k < network.row_end(i); ++k)
-      a(i, network.col(k)) = network.weight(k);
+    for (const auto [j, w] : network.row(i)) a(i, j) = w;
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(a);
   const double lambda = eigen.eigenvalues()(n - 1);
   double mean_p = 0.0;

@@ -1,17 +1,25 @@
 #include "theory/onset_amplitude.hpp"
 
 #include <cmath>
-#include <stdexcept>
+#include <string>
+
+#include "core/error.hpp"
 
 namespace hmfnet {
 
 double onset_amplitude(double lambda, double mean_degree, const std::vector<double>& u) {
-  if (u.empty()) throw std::invalid_argument("onset amplitude G: empty Perron vector");
-  if (!(mean_degree > 0.0)) throw std::invalid_argument("onset amplitude G: mean degree <= 0");
+  if (u.empty()) {
+    throw ParameterError("onset amplitude G: Perron vector", "empty", "one entry per node");
+  }
+  if (!(mean_degree > 0.0)) {
+    throw ParameterError("onset amplitude G: mean degree", std::to_string(mean_degree), "> 0");
+  }
   // Scale by max|u| first so u^4 neither overflows nor underflows; G is scale invariant.
   double largest = 0.0;
   for (const double x : u) largest = std::max(largest, std::abs(x));
-  if (largest == 0.0) throw std::invalid_argument("onset amplitude G: Perron vector is zero");
+  if (largest == 0.0) {
+    throw ParameterError("onset amplitude G: Perron vector", "all zero", "a nonzero vector");
+  }
   double m1 = 0.0, m2 = 0.0, m4 = 0.0;
   for (const double x : u) {
     const double y = x / largest;

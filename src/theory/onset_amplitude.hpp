@@ -7,7 +7,7 @@
 
 namespace hmfnet {
 
-/// Throws std::invalid_argument for an empty or all-zero u, or mean_degree <= 0.
+/// Throws ParameterError for an empty or all-zero u, or mean_degree <= 0.
 double onset_amplitude(double lambda, double mean_degree, const std::vector<double>& u);
 
 /// The near-onset approximation R = G sqrt((K - K_c)/K_c) for K >= K_c, 0 below.

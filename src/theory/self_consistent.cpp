@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "network/degree_statistics.hpp"
+#include "network/sparse_product.hpp"
 #include "spectral/component_radii.hpp"
 #include "theory/all_to_all.hpp"
 #include "theory/onset_amplitude.hpp"
@@ -26,18 +27,6 @@ std::string short_number(double x) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.3g", x);
   return buffer;
-}
-
-std::vector<double> multiply(const Network& network, const std::vector<double>& x) {
-  std::vector<double> y(static_cast<std::size_t>(network.size()), 0.0);
-  for (NodeIndex i = 0; i < network.size(); ++i) {
-    double sum = 0.0;
-    for (EdgeOffset k = network.row_begin(i); k < network.row_end(i); ++k) {
-      sum += network.weight(k) * x[static_cast<std::size_t>(network.col(k))];
-    }
-    y[static_cast<std::size_t>(i)] = sum;
-  }
-  return y;
 }
 
 // The shape of the first guess: the Perron vector if it is usable (right size, one sign),
@@ -70,7 +59,9 @@ double initial_coherence(const Network& network, const std::vector<double>& thet
     c[i] = std::cos(theta[i]);
     s[i] = std::sin(theta[i]);
   }
-  const std::vector<double> ac = multiply(network, c), as = multiply(network, s);
+  std::vector<double> ac, as;
+  multiply(network, c, ac);
+  multiply(network, s, as);
   double sum = 0.0;
   for (std::size_t i = 0; i < n; ++i) sum += c[i] * ac[i] + s[i] * as[i];
   return sum / (static_cast<double>(n) * static_cast<double>(n));

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
+#include <string>
 
+#include "core/error.hpp"
+#include "network/sparse_product.hpp"
 #include "theory/anderson_acceleration.hpp"
 #include "theory/bessel_ratio.hpp"
 
@@ -24,7 +26,7 @@ std::string solve_status_name(SolveStatus status) {
 
 SelfConsistentMap::SelfConsistentMap(const Network& network, double offset)
     : m_network(network), m_offset(offset), m_v(static_cast<std::size_t>(network.size())) {
-  if (network.size() < 1) throw std::invalid_argument("self-consistent map: empty network");
+  if (network.size() < 1) throw ParameterError("self-consistent map: network", "0 nodes", "N >= 1");
 }
 
 void SelfConsistentMap::apply(const std::vector<double>& r, double eta, std::vector<double>& r_out,
@@ -32,29 +34,11 @@ void SelfConsistentMap::apply(const std::vector<double>& r, double eta, std::vec
   const NodeIndex n = m_network.size();
   const double inv_eta = 1.0 / eta;
   const double inv_n = 1.0 / static_cast<double>(n);
-  r_out.resize(static_cast<std::size_t>(n));
   double* v = m_v.data();
 #pragma omp parallel for schedule(static)
   for (NodeIndex i = 0; i < n; ++i) v[i] = bessel_ratio(r[static_cast<std::size_t>(i)] * inv_eta);
-  const auto& row_ptr = m_network.row_ptr();
-  const auto& cols = m_network.cols();
-  const auto& weights = m_network.weights();
-  const bool weighted = m_network.weighted();
-#pragma omp parallel for schedule(static)
-  for (NodeIndex i = 0; i < n; ++i) {
-    double sum = 0.0;
-    const auto end = row_ptr[static_cast<std::size_t>(i) + 1];
-    if (weighted) {
-      for (auto k = row_ptr[static_cast<std::size_t>(i)]; k < end; ++k) {
-        sum += weights[static_cast<std::size_t>(k)] * v[cols[static_cast<std::size_t>(k)]];
-      }
-    } else {
-      for (auto k = row_ptr[static_cast<std::size_t>(i)]; k < end; ++k) {
-        sum += v[cols[static_cast<std::size_t>(k)]];
-      }
-    }
-    r_out[static_cast<std::size_t>(i)] = sum * inv_n;
-  }
+  multiply(m_network, m_v, r_out);
+  for (double& x : r_out) x *= inv_n;
   double energy = 0.0;
   for (NodeIndex i = 0; i < n; ++i) energy += r[static_cast<std::size_t>(i)] * v[i];
   eta_out = m_offset + energy * inv_n;
@@ -99,12 +83,12 @@ constexpr double k_max_log_step = 0.5;
 void require_closed_zero_set(const Network& network, const std::vector<double>& r) {
   for (NodeIndex i = 0; i < network.size(); ++i) {
     if (r[static_cast<std::size_t>(i)] != 0.0) continue;
-    for (EdgeOffset k = network.row_begin(i); k < network.row_end(i); ++k) {
-      if (r[static_cast<std::size_t>(network.col(k))] != 0.0) {
-        throw std::invalid_argument("self-consistent map: the guess is 0 at node " +
-                                    std::to_string(i) + " but not at its neighbour " +
-                                    std::to_string(network.col(k)) +
-                                    " (zeros must cover whole components)");
+    for (const RowEntry entry : network.row(i)) {
+      if (r[static_cast<std::size_t>(entry.col)] != 0.0) {
+        throw ParameterError("self-consistent map: guess",
+                             "0 at node " + std::to_string(i) + " but not at its neighbour " +
+                                 std::to_string(entry.col),
+                             "zeros that cover whole components");
       }
     }
   }
@@ -141,9 +125,12 @@ class LogVariables {
 MapFixedPoint iterate_self_consistent_map(const SelfConsistentMap& map, std::vector<double> r,
                                           double eta, const SelfConsistentOptions& options) {
   const auto n = static_cast<std::size_t>(map.size());
-  if (r.size() != n) throw std::invalid_argument("self-consistent map: guess has the wrong size");
+  if (r.size() != n) {
+    throw ParameterError("self-consistent map: guess", std::to_string(r.size()) + " entries",
+                         std::to_string(n) + " (one per node)");
+  }
   if (!(eta > 0.0) || !std::isfinite(eta)) {
-    throw std::invalid_argument("self-consistent map: guess needs 0 < eta < inf");
+    throw ParameterError("self-consistent map: guess eta", std::to_string(eta), "0 < eta < inf");
   }
   require_closed_zero_set(map.network(), r);
   const LogVariables variables(map.network(), r);

@@ -116,6 +116,6 @@ TEST_CASE("float32 force is bit-identical for 1 and 2 threads and per replica", 
 TEST_CASE("force precision names parse and refuse others", "[network_force]") {
   CHECK(parse_force_precision("float32") == ForcePrecision::float32);
   CHECK(parse_force_precision("float64") == ForcePrecision::float64);
-  CHECK_THROWS_WITH(parse_force_precision("half"), Catch::Contains("allowed float64, float32"));
+  CHECK_THROWS_WITH(parse_force_precision("half"), Catch::Contains("(allowed: float64, float32)"));
   CHECK(std::string(to_string(ForcePrecision::float32)) == "float32");
 }

@@ -1,4 +1,6 @@
 #include <catch2/catch.hpp>
+#include <utility>
+#include <vector>
 
 #include "network/network.hpp"
 #include "support/small_networks.hpp"
@@ -61,4 +63,25 @@ TEST_CASE("Small closed-form networks have the expected edge counts", "[network]
   REQUIRE(test::complete(6, true).self_loops() == 6);
   REQUIRE(test::complete_bipartite(3, 4).edges() == 12);
   REQUIRE(test::circulant(20, 3).degrees() == std::vector<double>(20, 6.0));
+}
+
+TEST_CASE("Network::row visits (column, weight) in storage order, weight 1 in a 0/1 network",
+          "[network]") {
+  // Path 0-1-2 with weights 2 and 3 and a self-loop of weight 5 on node 2.
+  const Network weighted =
+      Network::from_csr(3, {0, 1, 3, 5}, {1, 0, 2, 1, 2}, {2.0, 2.0, 3.0, 3.0, 5.0});
+  std::vector<std::pair<NodeIndex, double>> seen;
+  for (const auto [j, w] : weighted.row(1)) seen.emplace_back(j, w);
+  REQUIRE(seen == std::vector<std::pair<NodeIndex, double>>{{0, 2.0}, {2, 3.0}});
+  seen.clear();
+  for (const auto [j, w] : weighted.row(2)) seen.emplace_back(j, w);
+  REQUIRE(seen == std::vector<std::pair<NodeIndex, double>>{{1, 3.0}, {2, 5.0}});
+  REQUIRE(weighted.row(0).size() == 1);
+
+  const Network pattern = Network::from_undirected_edges(4, {{0, 1}, {1, 2}, {2, 2}});
+  seen.clear();
+  for (const auto [j, w] : pattern.row(2)) seen.emplace_back(j, w);
+  REQUIRE(seen == std::vector<std::pair<NodeIndex, double>>{{1, 1.0}, {2, 1.0}});
+  REQUIRE(pattern.row(3).empty());
+  REQUIRE(pattern.row(3).begin() == pattern.row(3).end());
 }

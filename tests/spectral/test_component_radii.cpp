@@ -8,7 +8,7 @@
 #include "network/stochastic_block.hpp"
 #include "network/structure.hpp"
 #include "spectral/component_radii.hpp"
-#include "spectral/dense_spectrum.hpp"
+#include "support/dense_spectrum.hpp"
 #include "support/small_networks.hpp"
 #include "support/tolerances.hpp"
 
@@ -46,7 +46,7 @@ TEST_CASE("Component radii of two ER communities match the dense solver [2 x 300
   const ComponentRadii r = component_radii(net, connected_components(net));
   REQUIRE(r.converged);
   REQUIRE(r.lambda.size() == 2);
-  const DenseSpectrum dense = dense_spectrum(net);
+  const test::DenseSpectrum dense = test::dense_spectrum(net);
   // The two largest eigenvalues of a block-diagonal A are the blocks' lambda_c.
   const double top = dense.eigenvalues.back(),
                second = dense.eigenvalues[dense.eigenvalues.size() - 2];

@@ -6,8 +6,8 @@
 #include "network/chung_lu.hpp"
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
-#include "spectral/dense_spectrum.hpp"
 #include "spectral/perron.hpp"
+#include "support/dense_spectrum.hpp"
 #include "support/small_networks.hpp"
 #include "support/tolerances.hpp"
 
@@ -47,11 +47,10 @@ TEST_CASE("Perron eigenvalue matches closed forms: star / K_ab / complete / d-re
 
 TEST_CASE("Perron pair matches Eigen's dense solver [ER N=1500 / SF N=1500]", "[perron]") {
   const Network er = erdos_renyi({1500, 0.02, 4});
-  const Network sf =
-      chung_lu(power_law_targets(1500, {2.5, 10.0}, 4), LinkProbability::capped, 4);
+  const Network sf = chung_lu(power_law_targets(1500, {2.5, 10.0}, 4), LinkProbability::capped, 4);
   for (const Network* net : {&er, &sf}) {
     const PerronResult r = solve(*net);
-    const DenseSpectrum dense = dense_spectrum(*net);
+    const test::DenseSpectrum dense = test::dense_spectrum(*net);
     INFO("lambda " << r.lambda << " dense " << dense.eigenvalues.back());
     REQUIRE_THAT(r.lambda, WithinRel(dense.eigenvalues.back(), test::k_eigenvalue_rel));
     REQUIRE(r.u.size() == dense.perron.size());
@@ -64,15 +63,15 @@ TEST_CASE("Perron pair matches Eigen's dense solver [ER N=1500 / SF N=1500]", "[
   }
 }
 
-TEST_CASE("Perron vector is unit-norm and non-negative with the residual it reports",
-          "[perron]") {
+TEST_CASE("Perron vector is unit-norm and non-negative with the residual it reports", "[perron]") {
   const Network net = erdos_renyi({3000, 0.01, 8});
   const PerronResult r = solve(net);
   double norm2 = 0.0, worst = 0.0;
   for (NodeIndex i = 0; i < net.size(); ++i) {
     norm2 += r.u[std::size_t(i)] * r.u[std::size_t(i)];
     double au = 0.0;
-    for (EdgeOffset k = net.row_begin(i); k < net.row_end(i); ++k) au += r.u[std::size_t(net.col(k))];
+    for (EdgeOffset k = net.row_begin(i); k < net.row_end(i); ++k)
+      au += r.u[std::size_t(net.col(k))];
     worst = std::max(worst, std::abs(au - r.lambda * r.u[std::size_t(i)]));
   }
   REQUIRE_THAT(norm2, WithinRel(1.0, 1e-12));

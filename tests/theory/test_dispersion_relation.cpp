@@ -11,7 +11,7 @@
 
 #include "core/error.hpp"
 #include "network/erdos_renyi.hpp"
-#include "spectral/dense_spectrum.hpp"
+#include "support/dense_spectrum.hpp"
 #include "support/small_networks.hpp"
 #include "support/tolerances.hpp"
 #include "theory/dispersion_relation.hpp"
@@ -130,7 +130,7 @@ TEST_CASE(
   for (int k = 0; k < 2; ++k) {
     for (unsigned seed = 1; seed <= 4; ++seed) {
       const Network net = erdos_renyi({250, degrees[k] / 249.0, seed});
-      const double lambda = dense_spectrum(net).eigenvalues.back();
+      const double lambda = test::dense_spectrum(net).eigenvalues.back();
       const std::vector<double> p = quantile_momenta(250, sigma0, seed + 10);
       const double K = coupling(2.0, sigma0, 250, lambda);
       const DispersionRoot full = solve_dispersion(net, K, p);

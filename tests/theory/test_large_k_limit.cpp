@@ -6,7 +6,7 @@
 
 #include "core/error.hpp"
 #include "network/erdos_renyi.hpp"
-#include "spectral/dense_spectrum.hpp"
+#include "support/dense_spectrum.hpp"
 #include "support/small_networks.hpp"
 #include "support/theory_support.hpp"
 #include "support/tolerances.hpp"
@@ -54,7 +54,7 @@ TEST_CASE("eq:KtoInfinity is the K -> infinity limit of eq:rSigmaBesselMain [ER 
           "[theory]") {
   // At finite K the variance equation carries sigma0^2 / K: R(K) - R_hat = O(K_c / K).
   const Network net = erdos_renyi({500, 0.04, 21});
-  const DenseSpectrum spectrum = dense_spectrum(net);
+  const test::DenseSpectrum spectrum = test::dense_spectrum(net);
   const double lambda = spectrum.eigenvalues.back();
   const LargeKLimit limit = solve_large_k_limit(net, tight());
   REQUIRE(limit.status == SolveStatus::converged);

@@ -13,7 +13,7 @@
 #include "network/stochastic_block.hpp"
 #include "network/structure.hpp"
 #include "spectral/component_radii.hpp"
-#include "spectral/dense_spectrum.hpp"
+#include "support/dense_spectrum.hpp"
 #include "support/small_networks.hpp"
 #include "support/theory_support.hpp"
 #include "support/tolerances.hpp"
@@ -77,7 +77,7 @@ TEST_CASE(
   const Network net = test::circulant(400, 5);
   const double sigma0 = 0.35;
   // u is constant and lambda = d: G = sqrt(2/5) exactly (eq:globalOrderRInDeltaK).
-  REQUIRE_THAT(onset_amplitude(10.0, mean_degree(net), dense_spectrum(net).perron),
+  REQUIRE_THAT(onset_amplitude(10.0, mean_degree(net), test::dense_spectrum(net).perron),
                WithinRel(std::sqrt(0.4), 1e-12));
   const SelfConsistentSystem system(net, 10.0, sigma0);
   for (const double kappa : {1.05, 1.5, 3.0, 30.0}) {
@@ -133,7 +133,7 @@ TEST_CASE("A rank-one network A = a a^T reduces to one scalar equation [N=150 we
 TEST_CASE("Below K_c the incoherent solution is returned exactly and labelled so [ER N=300]",
           "[theory]") {
   const Network net = erdos_renyi({300, 0.05, 7});
-  const DenseSpectrum spectrum = dense_spectrum(net);
+  const test::DenseSpectrum spectrum = test::dense_spectrum(net);
   const double lambda = spectrum.eigenvalues.back();
   const SelfConsistentSystem system(net, lambda, 0.35, 0.0, spectrum.perron);
   for (const double kappa : {0.2, 0.999, 1.0}) {
@@ -156,7 +156,7 @@ TEST_CASE("R / sqrt(K/K_c - 1) extrapolates to G as K -> K_c+ [ER N=500 and SF N
   const Network sf =
       chung_lu(power_law_targets(500, {2.5, 8.0, 499}, 11), LinkProbability::capped, 11);
   for (const Network* net : {&er, &sf}) {
-    const DenseSpectrum spectrum = dense_spectrum(*net);
+    const test::DenseSpectrum spectrum = test::dense_spectrum(*net);
     const double lambda = spectrum.eigenvalues.back();
     const double G = onset_amplitude(lambda, mean_degree(*net), spectrum.perron);
     const SelfConsistentSystem system(*net, lambda, 1.0, 0.0, spectrum.perron);
@@ -177,7 +177,7 @@ TEST_CASE("R / sqrt(K/K_c - 1) extrapolates to G as K -> K_c+ [ER N=500 and SF N
 TEST_CASE("R depends on K and sigma0 only through K/K_c [ER N=300 sigma0 = 0.35 and 2]",
           "[theory]") {
   const Network net = erdos_renyi({300, 0.05, 9});
-  const DenseSpectrum spectrum = dense_spectrum(net);
+  const test::DenseSpectrum spectrum = test::dense_spectrum(net);
   const double lambda = spectrum.eigenvalues.back();
   for (const double kappa : {1.1, 4.0}) {
     const SelfConsistentSolution a =
@@ -194,7 +194,7 @@ TEST_CASE(
     "[ER N=1000 K=1.05 K_c]",
     "[theory]") {
   const Network net = erdos_renyi({1000, 0.04, 12});
-  const DenseSpectrum spectrum = dense_spectrum(net);
+  const test::DenseSpectrum spectrum = test::dense_spectrum(net);
   const double lambda = spectrum.eigenvalues.back();
   const SelfConsistentSystem system(net, lambda, 0.35, 0.0, spectrum.perron);
   const double K = coupling(1.05, 0.35, net, lambda);
@@ -222,7 +222,7 @@ TEST_CASE(
   // an ER network at the same K/K_c, verification/solver_convergence.cpp), so 2000 evaluations,
   // ~3x what ER needs here, do not suffice.
   const Network net = test::random_bipartite(300, 500, 0.05, 3);
-  const DenseSpectrum spectrum = dense_spectrum(net);
+  const test::DenseSpectrum spectrum = test::dense_spectrum(net);
   const double lambda = spectrum.eigenvalues.back();
   REQUIRE_THAT(spectrum.eigenvalues.front(), WithinRel(-lambda, 1e-10));
   const SelfConsistentSystem system(net, lambda, 1.0, 0.0, spectrum.perron);
@@ -250,7 +250,7 @@ TEST_CASE(
   // star, K = 1.01 K_c, extrapolated onto the incoherent root and stalled there with residual
   // 1 - K_c/K. The log variables and the step limit of self_consistent_map.cpp fixed it.
   const Network net = test::star(200);
-  const DenseSpectrum spectrum = dense_spectrum(net);
+  const test::DenseSpectrum spectrum = test::dense_spectrum(net);
   const double lambda = spectrum.eigenvalues.back();
   const SelfConsistentSystem with_u(net, lambda, 1.0, 0.0, spectrum.perron);
   const SelfConsistentSystem with_d(net, lambda, 1.0);
@@ -268,7 +268,7 @@ TEST_CASE(
 TEST_CASE("A sweep warm-starts along K and matches independent solves [ER N=1000 unsorted K]",
           "[theory]") {
   const Network net = erdos_renyi({1000, 0.03, 13});
-  const DenseSpectrum spectrum = dense_spectrum(net);
+  const test::DenseSpectrum spectrum = test::dense_spectrum(net);
   const double lambda = spectrum.eigenvalues.back();
   const SelfConsistentSystem system(net, lambda, 0.35, 0.0, spectrum.perron);
   std::vector<double> Ks;
@@ -342,7 +342,7 @@ TEST_CASE(
   // community, r = 0 there is a fixed point of the map, and the solver returned that unstable
   // solution (R = 0.28 instead of 0.44 at N = 2000).
   const Network net = two_block_sbm({300, 0.1, 0.0, 7});
-  const DenseSpectrum spectrum = dense_spectrum(net);
+  const test::DenseSpectrum spectrum = test::dense_spectrum(net);
   const double lambda = spectrum.eigenvalues.back(),
                lambda_b = spectrum.eigenvalues[spectrum.eigenvalues.size() - 2];
   const SelfConsistentSystem system(net, lambda, 1.0, 0.0, spectrum.perron);
@@ -406,7 +406,7 @@ TEST_CASE(
   // starts coherent, but the synchronized K_60 raises sigma^2 until it is below (0.93): it
   // decays, and the solution has it incoherent.
   const Network net = test::two_cliques(50, 60);
-  const DenseSpectrum spectrum = dense_spectrum(net);
+  const test::DenseSpectrum spectrum = test::dense_spectrum(net);
   const SelfConsistentSystem system(net, 59.0, 1.0, 0.0, spectrum.perron);
   const double K = coupling(1.5, 1.0, net, 59.0);
   const SelfConsistentSolution s = system.solve(K, tight());

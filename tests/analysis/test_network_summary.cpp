@@ -5,11 +5,11 @@
 #include <string>
 #include <vector>
 
+#include "analysis/network_summary.hpp"
 #include "network/erdos_renyi.hpp"
 #include "network/stochastic_block.hpp"
 #include "parallel/distributed_network.hpp"
-#include "spectral/dense_spectrum.hpp"
-#include "spectral/network_summary.hpp"
+#include "support/dense_spectrum.hpp"
 #include "support/small_networks.hpp"
 #include "support/tolerances.hpp"
 
@@ -63,7 +63,7 @@ TEST_CASE("Near-degenerate lambda of two weakly linked communities is detected a
   // Blocks of 300, p_in = 0.1, p_out = 0.003: lambda ~ 30.9, lambda_2 ~ 29.1 (ratio ~ 1.06).
   const Network sbm = two_block_sbm({300, 0.1, 0.003, 5});
   const NetworkSummary s = summary_of(sbm);
-  const DenseSpectrum dense = dense_spectrum(sbm);
+  const test::DenseSpectrum dense = test::dense_spectrum(sbm);
   const double lambda2 = dense.eigenvalues[dense.eigenvalues.size() - 2];
   INFO("lambda " << s.lambda << ", lambda_2 " << s.lambda2 << " (dense " << lambda2 << ")");
   CHECK(s.components == 1);

@@ -1,4 +1,4 @@
-#include "spectral/network_summary.hpp"
+#include "analysis/network_summary.hpp"
 
 #include <algorithm>
 #include <cmath>

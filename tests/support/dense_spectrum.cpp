@@ -1,17 +1,21 @@
-#include "spectral/dense_spectrum.hpp"
+#include "support/dense_spectrum.hpp"
 
 #include <Eigen/Dense>
 #include <stdexcept>
+#include <string>
 
-namespace hmfnet {
+#include "core/error.hpp"
+
+namespace hmfnet::test {
 
 DenseSpectrum dense_spectrum(const Network& network) {
   const NodeIndex n = network.size();
-  if (n > 4000) throw std::invalid_argument("dense spectrum refused for N > 4000");
+  if (n > 4000) {
+    throw ParameterError("dense spectrum: N", std::to_string(n), "N <= 4000 (O(N^3) work)");
+  }
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
   for (NodeIndex i = 0; i < n; ++i)
-    for (EdgeOffset k = network.row_begin(i); k < network.row_end(i); ++k)
-      a(i, network.col(k)) = network.weight(k);
+    for (const auto [j, w] : network.row(i)) a(i, j) = w;
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(a);
   if (solver.info() != Eigen::Success) throw std::runtime_error("Eigen eigensolver failed");
   DenseSpectrum s;
@@ -22,4 +26,4 @@ DenseSpectrum dense_spectrum(const Network& network) {
   return s;
 }
 
-}  // namespace hmfnet
+}  // namespace hmfnet::test
