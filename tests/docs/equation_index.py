@@ -52,12 +52,16 @@ def cited_labels(source):
     """{label: first file citing it} over the code (the index itself is under docs/)."""
     cited = {}
     for top in CITING_DIRS:
-        for folder, _, files in os.walk(os.path.join(source, top)):
+        for folder, dirs, files in os.walk(os.path.join(source, top)):
+            dirs[:] = sorted(d for d in dirs if d != "__pycache__" and not d.startswith("."))
             for name in sorted(files):
                 path = os.path.join(folder, name)
-                with open(path, encoding="utf-8", errors="ignore") as f:
-                    for label in LABEL.findall(f.read()):
-                        cited.setdefault(label, os.path.relpath(path, source))
+                with open(path, "rb") as f:
+                    data = f.read()
+                if b"\0" in data:  # compiled or binary (.pyc, fuzz inputs): not a citation
+                    continue
+                for label in LABEL.findall(data.decode("utf-8", errors="ignore")):
+                    cited.setdefault(label, os.path.relpath(path, source))
     return cited
 
 
