@@ -209,6 +209,6 @@ int main(int argc, char** argv) {
   const Network small = erdos_renyi({1000, 0.01, 3});
   const Run hist = locked_run(check, small, 200.0, 2200.0);
   check_phase_histogram(check, small, hist);
-  check.data("constants", {run.point.frame[0], t1, t2, run.K});
+  check.data("constants", {{"Omega", run.point.frame[0]}, {"T1", t1}, {"T2", t2}, {"K", run.K}});
   return check.exit_code();
 }

@@ -194,8 +194,10 @@ void reference_curves(ClaimCheck& check, double beta, double x_field, double x_t
     const double q = -6.0 * sd + 12.0 * sd * i / points;
     p.insert(p.end(), {q, std::exp(-0.5 * q * q / (sd * sd)) / (sd * std::sqrt(2.0 * kPi))});
   }
-  check.data("theory_theta", theta, static_cast<std::size_t>(points) + 1, 3);
-  check.data("theory_p", p, static_cast<std::size_t>(points) + 1, 2);
+  const auto rows = static_cast<std::size_t>(points) + 1;
+  check.data("theory_theta", theta, rows,
+             {"theta_bar", "density (measured r_0)", "density (self-consistent r_0)"});
+  check.data("theory_p", p, rows, {"p_bar", "density"});
 }
 
 // The chi-square tests of the two marginals (header); the theta_bar test is checked with the
@@ -346,14 +348,23 @@ int main(int argc, char** argv) {
   // Step 6: figure data.
   std::vector<double> samples;
   for (std::size_t i = 0; i < theta.size(); ++i) samples.insert(samples.end(), {theta[i], pbar[i]});
-  check.data("samples", samples, theta.size(), 2);
+  check.data("samples", samples, theta.size(), {"theta_bar", "p_bar"});
   reference_curves(check, ref.beta, x_field, x);
-  check.data("constants",
-             {K, Kc, ref.beta, ref.r, x, beta_fit, point.r_node[0], x_field, nominal.beta,
-              nominal.r, tau_cos, tau_p, static_cast<double>(stride), dt, t1, t2});
-  check.note("constants",
-             "K, K_c, beta, self-consistent r_0, x = K beta r_0, beta from var(p_bar), measured "
-             "r_0, x with the measured r_0, nominal beta, nominal r_0, tau(cos theta_bar), "
-             "tau(p_bar) [samples], thinning stride, sample interval, T1, T2");
+  check.data("constants", {{"K", K},
+                           {"K_c", Kc},
+                           {"beta", ref.beta},
+                           {"r_0 self-consistent", ref.r},
+                           {"x = K beta r_0", x},
+                           {"beta from var(p_bar)", beta_fit},
+                           {"r_0 measured", point.r_node[0]},
+                           {"x with the measured r_0", x_field},
+                           {"beta nominal", nominal.beta},
+                           {"r_0 nominal", nominal.r},
+                           {"tau(cos theta_bar) [samples]", tau_cos},
+                           {"tau(p_bar) [samples]", tau_p},
+                           {"thinning stride", static_cast<double>(stride)},
+                           {"sample interval", dt},
+                           {"T1", t1},
+                           {"T2", t2}});
   return check.exit_code();
 }

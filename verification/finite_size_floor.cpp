@@ -121,7 +121,10 @@ void check_slope(ClaimCheck& check, const std::string& name, const std::vector<d
   check.data(prefix + "_x", x);
   check.data(prefix + "_R", R);
   check.data(prefix + "_R_err", err);
-  check.data(prefix + "_fit", {f.slope, f.intercept, f.se, f.chi2_dof});
+  check.data(prefix + "_fit", {{"slope", f.slope},
+                               {"intercept", f.intercept},
+                               {"slope se", f.se},
+                               {"chi2/dof", f.chi2_dof}});
 }
 
 }  // namespace

@@ -159,9 +159,11 @@ KResult run_one_k(ClaimCheck& check, const Network& net, const DistributedNetwor
     usable = usable && f.usable;
     efolds = std::min(efolds, f.efolds);
     check.data("fit_K" + ClaimCheck::format(x) + "_r" + std::to_string(b),
-               {f.t1, f.t2, f.slope, f.intercept});
+               {{"t1", f.t1}, {"t2", f.t2}, {"slope", f.slope}, {"intercept", f.intercept}});
   }
-  check.data("R_K" + ClaimCheck::format(x), table, records, B + 1);
+  std::vector<std::string> columns{"t"};
+  for (std::size_t b = 0; b < B; ++b) columns.push_back("R replica " + std::to_string(b));
+  check.data("R_K" + ClaimCheck::format(x), table, records, std::move(columns));
   const verification::MeanSd ms = verification::mean_sd(slopes);
   k.slope = ms.mean;
   k.slope_sem = ms.sd / std::sqrt(static_cast<double>(B));
@@ -219,10 +221,9 @@ int main(int argc, char** argv) {
     for (const double v : {x, k.gamma, k.gamma_sample, k.slope, k.slope_sem}) summary.push_back(v);
     results.push_back(k);
   }
-  check.data("summary", summary, xs.size(), 5);
-  check.note("columns_summary",
-             "[\"K/K_c\", \"gamma eq:gammaKKc\", \"gamma eq:lambdaHat sample\", "
-             "\"slope mean\", \"slope SEM\"]");
+  check.data(
+      "summary", summary, xs.size(),
+      {"K/K_c", "gamma eq:gammaKKc", "gamma eq:lambdaHat sample", "slope mean", "slope SEM"});
   check.note("K_over_Kc", "[1.5, 2, 3, 4]");
   check.holds("agreement improves with K/K_c", results.back().rel_error < results.front().rel_error,
               "relative error " + ClaimCheck::format(100 * results.front().rel_error) +

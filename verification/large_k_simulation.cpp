@@ -296,12 +296,15 @@ int main(int argc, char** argv) {
     check.within_abs("alpha 2.5: <R>_t at h/2 vs h", fine.mean, coarse.mean, 3.0 * sem,
                      "3 combined SEM; change / SEM = " +
                          ClaimCheck::format(std::abs(fine.mean - coarse.mean) / sem));
-    check.data("step_halving", {sc.h, coarse.mean, coarse.sem, fine.mean, fine.sem});
+    check.data("step_halving", {{"h", sc.h},
+                                {"R h", coarse.mean},
+                                {"SEM h", coarse.sem},
+                                {"R h/2", fine.mean},
+                                {"SEM h/2", fine.sem}});
   }
-  check.data("points", table, results.size(), 11);
-  check.note("columns_points",
-             "[\"alpha\", \"lambda\", \"K\", \"K_c\", \"R_sim\", \"R_sim SEM\", \"R_hat\", "
-             "\"R(K) sigma0\", \"R(K) (E, P)\", \"eq:rd\", \"R_floor\"]");
+  check.data("points", table, results.size(),
+             {"alpha", "lambda", "K", "K_c", "R_sim", "R_sim SEM", "R_hat", "R(K) sigma0",
+              "R(K) (E, P)", "eq:rd", "R_floor"});
   check.note("network", "Chung-Lu capped, seed 1, N = " + std::to_string(sc.n) +
                             ", ||d|| = 100; sigma0 = 0.35, Omega = 6, K = N");
   return check.exit_code();

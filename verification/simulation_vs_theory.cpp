@@ -248,13 +248,15 @@ void check_panel(ClaimCheck& check, const Panel& panel, const Scale& sc) {
   for (std::size_t k = 0; k < sc.K_over_Kc.size(); ++k) {
     const double x = sc.K_over_Kc[k];
     compare_point(check, panel.name, x, st, k, floor, half_means(sim, p, k));
-    // Figure data: rows K/K_c, columns as in the note columns_points.
+    // Figure data: rows K/K_c, columns named below.
     for (const double v : {x, p.K[k], st.mean[k], st.sem[k], st.sd[k], st.theory[k], st.nominal[k],
                            onset_order_parameter(G, x)}) {
       table.push_back(v);
     }
   }
-  check.data(panel.name + "_points", table, sc.K_over_Kc.size(), 8);
+  check.data(panel.name + "_points", table, sc.K_over_Kc.size(),
+             {"K/K_c", "K", "R", "SEM", "replica sd", "theory (E, P)", "theory (sigma0)",
+              "G sqrt(dK/K_c)"});
   // The theory curve on a fine grid (nominal sigma0, c0 = 0: the paper's solid line).
   std::vector<double> Ks, curve;
   for (int i = 0; i <= 80; ++i) Ks.push_back(Kc * (1.0 + 0.0005 + 3.5 * i / 80.0));
@@ -265,8 +267,12 @@ void check_panel(ClaimCheck& check, const Panel& panel, const Scale& sc) {
       curve.push_back(v);
     }
   }
-  check.data(panel.name + "_theory", curve, Ks.size(), 3);
-  check.data(panel.name + "_constants", {Kc, perron.lambda, G, panel.sigma0, floor});
+  check.data(panel.name + "_theory", curve, Ks.size(), {"K/K_c", "theory", "G sqrt(dK/K_c)"});
+  check.data(panel.name + "_constants", {{"K_c", Kc},
+                                         {"lambda", perron.lambda},
+                                         {"G", G},
+                                         {"sigma0", panel.sigma0},
+                                         {"floor", floor}});
 }
 
 }  // namespace
@@ -281,10 +287,6 @@ int main(int argc, char** argv) {
   const Scale sc = check.full() ? Scale{10000, {0.5, 2, 3, 4}, 1000.0, 500.0, 0.01, 4, true}
                                 : Scale{2000, {0.5, 2, 3, 4}, 600.0, 300.0, 0.02, 2, false};
   if (sc.pipeline_steps) check.note("steps", verification::pipeline_step_note());
-  check.note("columns_points",
-             "[\"K/K_c\", \"K\", \"R\", \"SEM\", \"replica sd\", \"theory (E, P)\", "
-             "\"theory (sigma0)\", \"G sqrt(dK/K_c)\"]");
-  check.note("columns_theory", "[\"K/K_c\", \"theory\", \"G sqrt(dK/K_c)\"]");
   check.note("alpha", "panel (b): alpha = 2.8 (Table II), caption says 2.5 with d_min = 33");
   // Step 2: the two networks, ||d|| = 100.
   const double q = erdos_renyi_probability(sc.n, 100.0);

@@ -204,13 +204,14 @@ int main(int argc, char** argv) {
                 std::to_string(points) + " points compared; largest |dR| / (10 tol R / eps) = " +
                     ClaimCheck::format(worst));
   }
-  check.data("counts", rows(curves), curves.size() * std::size(k_eps), 5);
-  check.note("columns",
-             "eps = K/K_c - 1, accelerated evaluations, plain evaluations (NaN: not converged "
-             "within the cap), accelerated seconds, plain seconds; rows per network in order");
+  // Evaluations are NaN where a solver did not converge within the cap.
+  check.data("counts", rows(curves), curves.size() * std::size(k_eps),
+             {"eps = K/K_c - 1", "accelerated evaluations", "plain evaluations",
+              "accelerated seconds", "plain seconds"});
+  check.note("counts_rows", "per network, in the order of `networks`");
   std::string labels = "[";
   for (const std::string& s : names) labels += (labels.size() > 1 ? ", \"" : "\"") + s + "\"";
   check.note("networks", labels + "]");
-  check.data("constants", {kTolerance, static_cast<double>(n)});
+  check.data("constants", {{"tolerance", kTolerance}, {"N", static_cast<double>(n)}});
   return check.exit_code();
 }

@@ -66,8 +66,8 @@ int main(int argc, char** argv) {
       table.insert(table.end(), {static_cast<double>(row.n), row.mean_degree, mean_degree(net),
                                  perron.lambda, row.paper_lambda});
     }
-    check.data("table", table, table.size() / 5, 5);
-    check.note("table_columns", "N, mean degree, realised mean degree, lambda, paper lambda");
+    check.data("table", table, table.size() / 5,
+               {"N", "mean degree", "realised mean degree", "lambda", "paper lambda"});
     status = check.exit_code();
   }
   return status;

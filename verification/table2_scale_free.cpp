@@ -96,10 +96,9 @@ void check_alpha_family(verification::ClaimCheck& check, int seeds) {
     rows.insert(rows.end(), {alpha[k], d_min, paper_dmin[k], md.mean, ml.mean, ml.sd,
                              paper_lambda[k], mr.mean, mr.sd, paper_rho[k]});
   }
-  check.data("alpha_family", rows, 5, 10);
-  check.note("alpha_family_columns",
-             "alpha, d_min, paper d_min, realised mean degree, lambda mean, lambda seed sd, "
-             "paper lambda, rho mean, rho seed sd, paper rho");
+  check.data("alpha_family", rows, 5,
+             {"alpha", "d_min", "paper d_min", "realised mean degree", "lambda mean",
+              "lambda seed sd", "paper lambda", "rho mean", "rho seed sd", "paper rho"});
   bool falling = true;
   for (std::size_t k = 1; k < lambda.size(); ++k) falling = falling && lambda[k] < lambda[k - 1];
   check.holds("lambda falls as alpha rises (seed means)", falling, "see the lambda lines above");
@@ -126,8 +125,8 @@ void check_rewiring(verification::ClaimCheck& check, std::uint64_t seed) {
                 static_cast<long long>(r.swaps), lambda.back());
     rewired.insert(rewired.end(), {r.final_rho, lambda.back()});
   }
-  check.data("rewired", rewired, 3, 2);
-  check.note("rewired_columns", "rho, lambda (start, then rewired to rho0 + 0.05 and + 0.10)");
+  check.data("rewired", rewired, 3, {"rho", "lambda"});
+  check.note("rewired_rows", "start, then rewired to rho0 + 0.05 and + 0.10");
   const double paper_rho[] = {0.97, 1.09}, paper_lambda[] = {364, 459};
   for (int k = 0; k < 2; ++k) {
     check.report("rewired network " + std::to_string(k + 1) + ": rho",

@@ -173,10 +173,9 @@ int main(int argc, char** argv) {
     table.insert(table.end(), rows.begin(), rows.end());
     labels += (labels.size() > 1 ? ", \"" : "\"") + c.name + "\"";
   }
-  check.data("gaps", table, table.size() / 5, 5);
-  check.note("columns",
-             "K/K_c, <R>_t, SEM, theory at the runs' (E, P), 1/sqrt(<d>); rows: "
-             "per network (in the order of `networks`) and K");
+  check.data("gaps", table, table.size() / 5,
+             {"K/K_c", "<R>_t", "SEM", "theory at the runs' (E, P)", "1/sqrt(<d>)"});
+  check.note("gaps_rows", "per network (in the order of `networks`) and K");
   check.note("networks", labels + "]");
   return check.exit_code();
 }

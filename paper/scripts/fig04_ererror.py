@@ -22,7 +22,8 @@ for ax, key, xlabel, title in (
         (axes[0], "vs_N", "$N$", f"(a) q = {protocol['q']}"),
         (axes[1], "vs_q", "$q$", f"(b) N = {protocol['N']}")):
     x, R, err = r.series(f"{key}_x"), r.series(f"{key}_R"), r.series(f"{key}_R_err")
-    slope, intercept, se, chi2 = r.series(f"{key}_fit")
+    fit = r.table(f"{key}_fit")
+    slope, intercept, se, chi2 = (fit[c] for c in ("slope", "intercept", "slope se", "chi2/dof"))
     ax.errorbar(x, R, yerr=err, fmt="o", ms=4, color="C0", label="simulation")
     grid = np.geomspace(x.min(), x.max(), 50)
     ax.plot(grid, np.exp(intercept) * grid ** slope, "-", color="C0", lw=0.8,

@@ -15,21 +15,24 @@ def main():
     args = hmfdata.arguments(__doc__)
     hmfdata.style()
     result = hmfdata.load(args.data, "growth_rate")
-    summary = result.series("summary")
+    summary = result.table("summary")
     fig, (left, right) = plt.subplots(1, 2)
     colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-    for row, color in zip(summary, colors):
-        x, gamma = row[0], row[1]
+    for x, gamma, color in zip(summary["K/K_c"], summary["gamma eq:gammaKKc"], colors):
         label = f"{x:g}"
-        table = result.series(f"R_K{label}")
-        for b in range(1, table.shape[1]):
-            left.semilogy(table[:, 0], table[:, b], color=color, lw=0.8, alpha=0.6,
-                          label=f"K/K_c = {label}" if b == 1 else None)
-        t1, t2, _, intercept = result.series(f"fit_K{label}_r0")
-        inside = (table[:, 0] >= t1) & (table[:, 0] <= t2)
-        left.semilogy(table[inside, 0], table[inside, 1], color=color, lw=2.2)
+        table = result.table(f"R_K{label}")
+        times = table["t"]
+        replicas = [c for c in table.columns if c.startswith("R replica ")]
+        for b, column in enumerate(replicas):
+            left.semilogy(times, table[column], color=color, lw=0.8, alpha=0.6,
+                          label=f"K/K_c = {label}" if b == 0 else None)
+        fit = result.table(f"fit_K{label}_r0")
+        t1, t2 = fit["t1"], fit["t2"]
+        R0 = table["R replica 0"]
+        inside = (times >= t1) & (times <= t2)
+        left.semilogy(times[inside], R0[inside], color=color, lw=2.2)
         tm = 0.5 * (t1 + t2)
-        rm = np.interp(tm, table[:, 0], table[:, 1])
+        rm = np.interp(tm, times, R0)
         t = np.linspace(max(0.0, tm - 2.0 / gamma), tm + 1.5 / gamma, 50)
         left.semilogy(t, rm * np.exp(gamma * (t - tm)), "--", color=color, lw=1.0)
     left.set_xlabel("t")
@@ -37,11 +40,12 @@ def main():
     left.set_ylim(0.01, 1.0)
     left.legend(loc="lower right")
     left.set_title("R(t), thick: fit window (replica 0); dashed: slope gamma of eq:gammaKKc")
-    xs = summary[:, 0]
-    right.plot(xs, summary[:, 1], "k-s", ms=4, label="eq:gammaKKc")
-    right.plot(xs, summary[:, 2], "k:", label="eq:lambdaHat (sample momenta)")
-    right.errorbar(xs, summary[:, 3], yerr=3 * summary[:, 4], fmt="o", color="tab:blue",
-                   capsize=3, label="fitted slope (3 SEM over seeds)")
+    xs = summary["K/K_c"]
+    right.plot(xs, summary["gamma eq:gammaKKc"], "k-s", ms=4, label="eq:gammaKKc")
+    right.plot(xs, summary["gamma eq:lambdaHat sample"], "k:",
+               label="eq:lambdaHat (sample momenta)")
+    right.errorbar(xs, summary["slope mean"], yerr=3 * summary["slope SEM"], fmt="o",
+                   color="tab:blue", capsize=3, label="fitted slope (3 SEM over seeds)")
     right.set_xlabel("K / K_c")
     right.set_ylabel("growth rate")
     right.legend(loc="upper left")

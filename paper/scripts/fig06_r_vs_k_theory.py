@@ -12,16 +12,16 @@ import hmfdata
 
 
 def panel(ax, result, name, title):
-    points = result.series(f"{name}_points")
-    curve = result.series(f"{name}_theory")
-    ax.plot(curve[:, 0], curve[:, 1], "k-", lw=1.2, label="eq:rSigmaBesselMain (sigma0)")
-    ax.plot(curve[:, 0], curve[:, 2], "r--", lw=1.0, label="G sqrt(dK/K_c)")
-    ax.errorbar(points[:, 0], points[:, 2], yerr=points[:, 4], fmt="o", color="tab:blue",
+    points = result.table(f"{name}_points")
+    curve = result.table(f"{name}_theory")
+    ax.plot(curve["K/K_c"], curve["theory"], "k-", lw=1.2, label="eq:rSigmaBesselMain (sigma0)")
+    ax.plot(curve["K/K_c"], curve["G sqrt(dK/K_c)"], "r--", lw=1.0, label="G sqrt(dK/K_c)")
+    x, R = points["K/K_c"], points["R"]
+    ax.errorbar(x, R, yerr=points["replica sd"], fmt="o", color="tab:blue",
                 capsize=3, label="simulation (replica sd)")
-    ax.errorbar(points[:, 0], points[:, 2], yerr=points[:, 3], fmt="none", color="navy",
-                capsize=6)
-    above = points[:, 0] > 1.0
-    ax.plot(points[above, 0], points[above, 5], "x", color="k", ms=6,
+    ax.errorbar(x, R, yerr=points["SEM"], fmt="none", color="navy", capsize=6)
+    above = x > 1.0
+    ax.plot(x[above], points["theory (E, P)"][above], "x", color="k", ms=6,
             label="theory at the run's (E, P)")
     ax.axvline(1.0, color="0.6", lw=0.8, ls=":")
     ax.set_xlabel("K / K_c")

@@ -15,7 +15,8 @@ import hmfdata
 
 
 def frequencies(ax, result):
-    omega, t1, t2, _ = result.series("constants")
+    constants = result.table("constants")
+    omega, t1, t2 = constants["Omega"], constants["T1"], constants["T2"]
     rel = 100.0 * result.series("omega_relative")
     rotor = 100.0 * result.series("rotor_omega_relative")
     bound = 100.0 * 2.0 * np.pi / ((t2 - t1) * omega)
@@ -62,7 +63,7 @@ def main():
     fig, (left, right) = plt.subplots(1, 2)
     frequencies(left, result)
     fluctuations(right, result)
-    fig.suptitle(f"Fig. Assumptions1: ER, K = {result.series('constants')[3]:.4g} = 3 K_c")
+    fig.suptitle(f"Fig. Assumptions1: ER, K = {result.table('constants')['K']:.4g} = 3 K_c")
     fig.tight_layout()
     hmfdata.save_figure(fig, args.out, "fig07_assumptions1", result.scale)
 

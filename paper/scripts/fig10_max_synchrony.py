@@ -18,10 +18,10 @@ def main():
     theory = hmfdata.load(args.data, "max_synchrony_alpha")
     sim = hmfdata.load(args.data, "large_k_simulation")
     alpha, R_hat, rd = theory.series("alpha"), theory.series("R_hat"), theory.series("rd")
-    # columns: see the note columns_points of large_k_simulation
-    p = sim.series("points")
-    a_sim, R_sim, sem, R_hat_sim, R_K = p[:, 0], p[:, 4], p[:, 5], p[:, 6], p[:, 8]
-    ratio = p[:, 2] / p[:, 3]
+    p = sim.table("points")
+    a_sim, R_sim, sem, R_hat_sim, R_K = (p[c] for c in ("alpha", "R_sim", "R_sim SEM", "R_hat",
+                                                        "R(K) (E, P)"))
+    ratio = p["K"] / p["K_c"]
     network = sim.notes.get("network", "")
 
     fig, (left, right) = plt.subplots(1, 2)

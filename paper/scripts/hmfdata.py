@@ -6,6 +6,9 @@ the numbers that `ctest -L verification` judged. Layout of one file:
   root attributes: driver, claim, scale (ci|full), passed, checks (JSON list of records
   {kind: check|report, what, ours, reference, detail, pass}), hmfnet_version, git_commit,
   wall_seconds; datasets /data/NAME (1-D or 2-D) and string attributes of /data (notes).
+A table's column names (or the names of a 1-D list of numbers) are the dataset's attribute
+`columns`, a JSON list; scripts read columns by those names (DriverResult.table), never by
+position, so a driver that reorders or adds a column cannot silently shift a figure's data.
 """
 import argparse
 import json
@@ -22,6 +25,26 @@ import numpy as np  # noqa: E402
 
 
 @dataclass
+class Table:
+    """A /data dataset whose columns are named: table["K/K_c"] is that column of a 2-D table,
+    or that number of a 1-D list of named numbers."""
+    path: str
+    name: str
+    columns: list
+    values: np.ndarray
+
+    def __getitem__(self, column):
+        if column not in self.columns:
+            raise KeyError(f"{self.path}: dataset /data/{self.name} has no column '{column}' "
+                           f"(columns: {self.columns})")
+        i = self.columns.index(column)
+        return self.values[i] if self.values.ndim == 1 else self.values[:, i]
+
+    def __len__(self):
+        return self.values.shape[0]
+
+
+@dataclass
 class DriverResult:
     driver: str
     claim: str
@@ -29,7 +52,9 @@ class DriverResult:
     passed: bool
     checks: list
     attrs: dict
+    path: str = ""
     data: dict = field(default_factory=dict)
+    columns: dict = field(default_factory=dict)  # dataset name -> its column names
     notes: dict = field(default_factory=dict)
 
     def series(self, name):
@@ -37,6 +62,19 @@ class DriverResult:
         if name not in self.data:
             raise KeyError(f"{self.driver}: no data series '{name}' (has: {sorted(self.data)})")
         return self.data[name]
+
+    def table(self, name):
+        """A /data dataset with named columns; KeyError names the file and the dataset."""
+        values = self.series(name)
+        if name not in self.columns:
+            raise KeyError(f"{self.path}: dataset /data/{name} has no column names "
+                           f"(attribute 'columns')")
+        columns = self.columns[name]
+        width = values.shape[-1] if values.ndim == 2 else values.size
+        if values.ndim not in (1, 2) or len(columns) != width:
+            raise ValueError(f"{self.path}: dataset /data/{name}: {len(columns)} column names "
+                             f"for shape {values.shape}")
+        return Table(self.path, name, columns, values)
 
     def note_json(self, name):
         return json.loads(self.notes[name])
@@ -55,10 +93,13 @@ def load(data_dir, driver):
             raise ValueError(f"{path}: not a verification output (hmfnet_format missing)")
         result = DriverResult(
             driver=attrs["driver"], claim=attrs["claim"], scale=attrs["scale"],
-            passed=bool(attrs["passed"]), checks=json.loads(attrs["checks"]), attrs=attrs)
+            passed=bool(attrs["passed"]), checks=json.loads(attrs["checks"]), attrs=attrs,
+            path=path)
         if "data" in f:
             for name, dataset in f["data"].items():
                 result.data[name] = np.asarray(dataset[()])
+                if "columns" in dataset.attrs:
+                    result.columns[name] = json.loads(_text(dataset.attrs["columns"]))
             result.notes = {k: _text(v) for k, v in f["data"].attrs.items()}
     return result
 

@@ -155,7 +155,7 @@ def step_choices(result):
     keys = sorted(k for k in result.notes if k.startswith("scene") and k[5:].isdigit())
     for key in keys:
         meta = result.note_json(key)
-        paper = result.series(f"{key}_reference")[5]
+        paper = result.table(f"{key}_reference")["leap-frog h=0.01 evaluations per unit time"]
         cost = meta["evaluations_per_time"]
         lines.append(f"| {SCENE_FIGURES.get(meta['name'], '')} | {meta['name']} | "
                      f"{meta['choice']}, {meta['h']:g} | {cost:.4g} | {paper / cost:.1f}x |")

@@ -14,18 +14,24 @@ def main():
     args = hmfdata.arguments(__doc__)
     r = hmfdata.load(args.data, "solver_convergence")
     names = r.note_json("networks")
-    rows = r.series("counts")
-    tol = r.series("constants")[0]
+    rows = r.table("counts")
+    tol = r.table("constants")["tolerance"]
     per = len(rows) // len(names)
     hmfdata.style()
     fig, axes = plt.subplots(1, 2, figsize=(9.5, 4.0))
     for i, name in enumerate(names):
-        block = rows[i * per:(i + 1) * per]
-        eps = block[:, 0]
-        axes[0].loglog(eps, block[:, 1], "o-", ms=3, color=f"C{i}", label=f"{name}: accelerated")
-        axes[0].loglog(eps, block[:, 2], "s--", ms=3, color=f"C{i}", label=f"{name}: plain")
-        axes[1].loglog(eps, block[:, 3], "o-", ms=3, color=f"C{i}")
-        axes[1].loglog(eps, block[:, 4], "s--", ms=3, color=f"C{i}")
+        block = slice(i * per, (i + 1) * per)  # rows: per network, in the order of names
+
+        def column(c):
+            return rows[c][block]
+
+        eps = column("eps = K/K_c - 1")
+        axes[0].loglog(eps, column("accelerated evaluations"), "o-", ms=3, color=f"C{i}",
+                       label=f"{name}: accelerated")
+        axes[0].loglog(eps, column("plain evaluations"), "s--", ms=3, color=f"C{i}",
+                       label=f"{name}: plain")
+        axes[1].loglog(eps, column("accelerated seconds"), "o-", ms=3, color=f"C{i}")
+        axes[1].loglog(eps, column("plain seconds"), "s--", ms=3, color=f"C{i}")
     grid = np.logspace(-4, 0, 50)
     axes[0].loglog(grid, np.log(2 * grid / tol) / (2 * grid), ":", color="k",
                    label="ln(2 eps / tol) / (2 eps)")
@@ -33,7 +39,7 @@ def main():
                 title="iterations to residual 1e-10")
     axes[1].set(xlabel="$K/K_c - 1$", ylabel="wall seconds", title="time per solve")
     axes[0].legend(fontsize=6)
-    fig.suptitle(f"Self-consistent solver near onset, N = {int(r.series('constants')[1])}")
+    fig.suptitle(f"Self-consistent solver near onset, N = {int(r.table('constants')['N'])}")
     fig.tight_layout()
     hmfdata.save_figure(fig, args.out, "solver_convergence", r.scale)
 

@@ -10,7 +10,9 @@ import hmfdata
 def markdown(table):
     lines = ["| N | mean degree | realised mean degree | lambda (ours) | lambda (paper) | diff |",
              "|---:|---:|---:|---:|---:|---:|"]
-    for n, d, realised, ours, paper in table:
+    for n, d, realised, ours, paper in zip(table["N"], table["mean degree"],
+                                           table["realised mean degree"], table["lambda"],
+                                           table["paper lambda"]):
         lines.append(f"| {n:.0f} | {d:g} | {realised:.2f} | {ours:.2f} | {paper:g} | "
                      f"{100 * (ours - paper) / paper:+.2f}% |")
     return "\n".join(lines) + "\n"
@@ -19,14 +21,15 @@ def markdown(table):
 def main():
     args = hmfdata.arguments(__doc__)
     r = hmfdata.load(args.data, "table1_er_lambda")
-    table = r.series("table")
+    table = r.table("table")
     hmfdata.write_text(os.path.join(args.out, "table1.md"), markdown(table))
     hmfdata.style()
     fig, (a, b) = plt.subplots(1, 2)
-    d, ours, paper = table[:, 1], table[:, 3], table[:, 4]
+    d, ours, paper = table["mean degree"], table["lambda"], table["paper lambda"]
     a.loglog(d, ours, "o", label="ours (seed 2024)")
     a.loglog(d, paper, "x", ms=8, label="paper (Table I)")
-    a.loglog(d, table[:, 2] + 1, "-", lw=0.8, color="0.5", label="realised ||d|| + 1")
+    a.loglog(d, table["realised mean degree"] + 1, "-", lw=0.8, color="0.5",
+             label="realised ||d|| + 1")
     a.set_xlabel("mean degree ||d||")
     a.set_ylabel("lambda")
     a.legend()

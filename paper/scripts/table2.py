@@ -8,17 +8,21 @@ import matplotlib.pyplot as plt
 import hmfdata
 
 
+FAMILY = ("alpha", "d_min", "paper d_min", "realised mean degree", "lambda mean", "lambda seed sd",
+          "paper lambda", "rho mean", "rho seed sd", "paper rho")
+
+
 def markdown(rows, rewired):
     lines = ["| alpha | d_min (ours) | d_min (paper) | realised mean degree | lambda (ours) | "
              "lambda (paper) | rho (ours) | rho (paper) |",
              "|---:|---:|---:|---:|---:|---:|---:|---:|"]
-    for a, dmin, pdmin, md, lm, ls, pl, rm, rs, pr in rows:
+    for a, dmin, pdmin, md, lm, ls, pl, rm, rs, pr in zip(*(rows[c] for c in FAMILY)):
         lines.append(f"| {a:g} | {dmin:.2f} | {pdmin:g} | {md:.1f} | {lm:.1f} +- {ls:.1f} | "
                      f"{pl:g} | {rm:.3f} +- {rs:.3f} | {pr:g} |")
     lines += ["", "Rewired alpha = 2.5 network (Fig. PLcorr; paper: rho 0.78, 0.97, 1.09 with "
               "lambda 282, 364, 459):", "",
               "| network | rho (ours) | lambda (ours) |", "|---|---:|---:|"]
-    for k, (rho, lam) in enumerate(rewired):
+    for k, (rho, lam) in enumerate(zip(rewired["rho"], rewired["lambda"])):
         lines.append(f"| {'start' if k == 0 else f'rewired {k}'} | {rho:.3f} | {lam:.1f} |")
     return "\n".join(lines) + "\n"
 
@@ -26,22 +30,24 @@ def markdown(rows, rewired):
 def main():
     args = hmfdata.arguments(__doc__)
     r = hmfdata.load(args.data, "table2_scale_free")
-    rows, rewired = r.series("alpha_family"), r.series("rewired")
+    rows, rewired = r.table("alpha_family"), r.table("rewired")
     hmfdata.write_text(os.path.join(args.out, "table2.md"), markdown(rows, rewired))
     hmfdata.style()
     fig, (a, b, c) = plt.subplots(1, 3, figsize=(11, 3.6))
-    alpha = rows[:, 0]
-    a.errorbar(alpha, rows[:, 4], yerr=rows[:, 5], fmt="o", capsize=3, label="ours (seed sd)")
-    a.plot(alpha, rows[:, 6], "x", ms=8, label="paper")
+    alpha = rows["alpha"]
+    a.errorbar(alpha, rows["lambda mean"], yerr=rows["lambda seed sd"], fmt="o", capsize=3,
+               label="ours (seed sd)")
+    a.plot(alpha, rows["paper lambda"], "x", ms=8, label="paper")
     a.set_xlabel("alpha")
     a.set_ylabel("lambda")
     a.legend()
-    b.errorbar(alpha, rows[:, 7], yerr=rows[:, 8], fmt="o", capsize=3, label="ours (seed sd)")
-    b.plot(alpha, rows[:, 9], "x", ms=8, label="paper")
+    b.errorbar(alpha, rows["rho mean"], yerr=rows["rho seed sd"], fmt="o", capsize=3,
+               label="ours (seed sd)")
+    b.plot(alpha, rows["paper rho"], "x", ms=8, label="paper")
     b.set_xlabel("alpha")
     b.set_ylabel("rho (eq:rhodef)")
     b.legend()
-    c.plot(rewired[:, 0], rewired[:, 1], "o-", label="ours: start and rewired")
+    c.plot(rewired["rho"], rewired["lambda"], "o-", label="ours: start and rewired")
     c.plot([0.78, 0.97, 1.09], [282, 364, 459], "x--", ms=8, label="paper")
     c.set_xlabel("rho")
     c.set_ylabel("lambda")

@@ -13,19 +13,21 @@ def main():
     args = hmfdata.arguments(__doc__)
     r = hmfdata.load(args.data, "theory_breaking_networks")
     names = r.note_json("networks")
-    rows = r.series("gaps")
+    rows = r.table("gaps")
     per = len(rows) // len(names)
     hmfdata.style()
     fig, ax = plt.subplots(figsize=(8.0, 3.8))
     width = 0.8 / per
     for j in range(per):
-        block = rows[j::per]
+        # rows: per network (in the order of names) and K
+        R, sem = rows["<R>_t"][j::per], rows["SEM"][j::per]
+        theory, ratio = rows["theory at the runs' (E, P)"][j::per], rows["K/K_c"][j::per]
         x = np.arange(len(names)) + (j - (per - 1) / 2) * width
-        ax.bar(x, block[:, 1], width, yerr=block[:, 2], color=f"C{j}", alpha=0.6,
-               label=f"simulation, K/K_c = {block[0, 0]:g}")
-        ax.plot(x, block[:, 3], "k_", ms=14, mew=2,
+        ax.bar(x, R, width, yerr=sem, color=f"C{j}", alpha=0.6,
+               label=f"simulation, K/K_c = {ratio[0]:g}")
+        ax.plot(x, theory, "k_", ms=14, mew=2,
                 label="theory at the run's (E, P)" if j == 0 else None)
-        for xi, (sim, th) in zip(x, block[:, [1, 3]]):
+        for xi, sim, th in zip(x, R, theory):
             ax.annotate(f"{100 * (sim - th) / th:+.0f}%", (xi, max(sim, th) + 0.01),
                         ha="center", fontsize=6)
     ax.set_xticks(np.arange(len(names)))

@@ -20,12 +20,15 @@ def main():
     hmfdata.style()
     fig, axes = plt.subplots(3, len(scenes), figsize=(3.2 * len(scenes), 9.0), squeeze=False)
     for col, key in enumerate(scenes):
-        rows, ref = r.series(key), r.series(f"{key}_reference")
+        rows, ref = r.table(key), r.table(f"{key}_reference")
         meta = json.loads(r.notes[key])
-        floor = ref[3]
+        floor, paper_cost = ref["paper-window floor"], \
+            ref["leap-frog h=0.01 evaluations per unit time"]
         for m, name in enumerate(methods):
-            sel = rows[:, 0] == m
-            h, sec, ev, de, dr = rows[sel, 1], rows[sel, 2], rows[sel, 3], rows[sel, 4], rows[sel, 5]
+            sel = rows["method index"] == m
+            h, sec, ev, de, dr = (rows[c][sel] for c in (
+                "h", "seconds per unit time", "force evaluations per unit time",
+                "max relative energy error", "|<R>_h - <R>_ref|"))
             ok = np.isfinite(ev)
             axes[0, col].loglog(ev[ok], de[ok], "o-", ms=3, label=name)
             axes[1, col].loglog(ev[ok], np.maximum(dr[ok], 1e-9), "o-", ms=3, label=name)
@@ -36,8 +39,8 @@ def main():
         for row in (1, 2):
             axes[row, col].axhline(floor, ls="--", color="k", lw=0.8,
                                    label="SEM over the paper's window")
-        axes[0, col].axvline(ref[5], ls=":", color="C3", lw=0.8, label="paper: leapfrog h=0.01")
-        axes[1, col].axvline(ref[5], ls=":", color="C3", lw=0.8)
+        axes[0, col].axvline(paper_cost, ls=":", color="C3", lw=0.8, label="paper: leapfrog h=0.01")
+        axes[1, col].axvline(paper_cost, ls=":", color="C3", lw=0.8)
         axes[0, col].set_title(f"{meta['name']}\nchoice: {meta['choice']} h={meta['h']:g}",
                                fontsize=8)
         axes[0, col].set_xlabel("force evaluations per unit time")

@@ -120,7 +120,7 @@ bool ClaimCheck::record(Record r) {
 
 void ClaimCheck::data(const std::string& name, std::vector<double> values) {
   const std::size_t n = values.size();
-  m_series.push_back({name, std::move(values), n, 0});
+  m_series.push_back({name, std::move(values), n, 0, {}});
 }
 
 void ClaimCheck::data(const std::string& name, std::vector<double> values, std::size_t rows,
@@ -129,7 +129,25 @@ void ClaimCheck::data(const std::string& name, std::vector<double> values, std::
     throw ParameterError("data " + name, std::to_string(values.size()) + " values",
                          std::to_string(rows) + " x " + std::to_string(cols));
   }
-  m_series.push_back({name, std::move(values), rows, cols});
+  m_series.push_back({name, std::move(values), rows, cols, {}});
+}
+
+void ClaimCheck::data(const std::string& name, std::vector<double> values, std::size_t rows,
+                      std::vector<std::string> columns) {
+  data(name, std::move(values), rows, columns.size());
+  m_series.back().columns = std::move(columns);
+}
+
+void ClaimCheck::data(const std::string& name,
+                      const std::vector<std::pair<std::string, double>>& named) {
+  std::vector<double> values;
+  std::vector<std::string> columns;
+  for (const auto& [key, value] : named) {
+    columns.push_back(key);
+    values.push_back(value);
+  }
+  data(name, std::move(values));
+  m_series.back().columns = std::move(columns);
 }
 
 void ClaimCheck::note(const std::string& name, std::string value) {
@@ -157,7 +175,7 @@ int ClaimCheck::exit_code() {
 
 // Layout (read by paper/scripts/hmfdata.py): root attributes driver, claim, scale, passed,
 // checks (JSON list of records), hmfnet_version, git_commit, wall_seconds; /data/NAME datasets
-// and string attributes of /data.
+// (a table's column names in its attribute `columns`, a JSON list) and string attributes of /data.
 void ClaimCheck::write_output(double wall_seconds) const {
   nlohmann::json checks = nlohmann::json::array();
   for (const Record& r : m_records) {
@@ -189,6 +207,11 @@ void ClaimCheck::write_output(double wall_seconds) const {
         file.write(group.get(), s.name, s.values);
       } else {
         file.write_matrix(group.get(), s.name, s.values, s.rows, s.cols);
+      }
+      if (!s.columns.empty()) {
+        const H5Id set(H5Dopen2(group.get(), s.name.c_str(), H5P_DEFAULT), H5Dclose);
+        if (set.get() < 0) file.fail("cannot open /data/" + s.name + " to name its columns");
+        file.set_attribute(set.get(), "columns", nlohmann::json(s.columns).dump());
       }
     }
     for (const auto& [name, value] : m_notes) file.set_attribute(group.get(), name, value);

@@ -8,6 +8,7 @@
 // figures show exactly the numbers that `ctest -L verification` judged.
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hmfnet::verification {
@@ -44,6 +45,13 @@ class ClaimCheck {
   void data(const std::string& name, std::vector<double> values);
   void data(const std::string& name, std::vector<double> values, std::size_t rows,
             std::size_t cols);
+  /// A table of rows x columns.size() row-major whose column names are stored beside it (the
+  /// attribute `columns` of /data/NAME, a JSON list), so scripts read columns by name and a
+  /// reordering here cannot silently move a figure's data.
+  void data(const std::string& name, std::vector<double> values, std::size_t rows,
+            std::vector<std::string> columns);
+  /// Named numbers: a 1-D /data/NAME with their names in its attribute `columns`.
+  void data(const std::string& name, const std::vector<std::pair<std::string, double>>& named);
   /// A string attribute of /data (labels, JSON descriptions of the series).
   void note(const std::string& name, std::string value);
 
@@ -70,6 +78,7 @@ class ClaimCheck {
     std::string name;
     std::vector<double> values;
     std::size_t rows, cols;
+    std::vector<std::string> columns;  // empty: unnamed
   };
   bool record(Record r);
   void write_output(double wall_seconds) const;
