@@ -55,8 +55,8 @@ void StreamWriteFloor(benchmark::State& state) {
     benchmark::DoNotOptimize(cols.data());
     benchmark::ClobberMemory();
   }
-  state.counters["nnz_per_s"] = benchmark::Counter(static_cast<double>(nnz),
-                                                   benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["nnz_per_s"] =
+      benchmark::Counter(static_cast<double>(nnz), benchmark::Counter::kIsIterationInvariantRate);
 }
 
 void ChungLu(benchmark::State& state) {

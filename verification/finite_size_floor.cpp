@@ -35,9 +35,9 @@
 #include "parallel/parallel_session.hpp"
 #include "spectral/perron.hpp"
 #include "support/claim_check.hpp"
-#include "support/work_account.hpp"
 #include "support/pipeline_step.hpp"
 #include "support/sample_statistics.hpp"
+#include "support/work_account.hpp"
 #include "theory/critical_coupling.hpp"
 
 using namespace hmfnet;
@@ -56,7 +56,8 @@ struct Scale {
 };
 
 // Step 2: <R>_t at K = K_c / 2 on one network, replica mean and its error.
-Floor floor_at_half_kc(ClaimCheck& check, NodeIndex n, double q, std::uint64_t seed, const Scale& s) {
+Floor floor_at_half_kc(ClaimCheck& check, NodeIndex n, double q, std::uint64_t seed,
+                       const Scale& s) {
   const Network net = erdos_renyi({n, q, seed});
   const DistributedNetwork distributed(net);
   const double lambda = perron_eigenpair(distributed).lambda;

@@ -45,8 +45,8 @@
 #include "parallel/parallel_session.hpp"
 #include "spectral/perron.hpp"
 #include "support/claim_check.hpp"
-#include "support/work_account.hpp"
 #include "support/sample_statistics.hpp"
+#include "support/work_account.hpp"
 #include "theory/critical_coupling.hpp"
 #include "theory/dispersion_relation.hpp"
 

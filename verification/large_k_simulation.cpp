@@ -96,8 +96,9 @@ struct Sample {
 };
 
 // One run at coupling K from the incoherent state; the theory at each replica's E and P.
-Sample simulate_at(ClaimCheck& check, const Network& net, const DistributedNetwork& d, const PerronResult& perron,
-                   double K, double h, double duration, double transient, int replicas) {
+Sample simulate_at(ClaimCheck& check, const Network& net, const DistributedNetwork& d,
+                   const PerronResult& perron, double K, double h, double duration,
+                   double transient, int replicas) {
   SimulationParameters p;
   p.h = h;
   p.duration = duration;

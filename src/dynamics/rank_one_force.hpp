@@ -14,8 +14,8 @@
 namespace hmfnet {
 
 struct RankOneStructure {
-  std::vector<double> a;   ///< the whole vector (every rank)
-  bool diagonal = true;    ///< A_nn = a_n^2 stored; false: no self-loops
+  std::vector<double> a;  ///< the whole vector (every rank)
+  bool diagonal = true;   ///< A_nn = a_n^2 stored; false: no self-loops
 };
 
 /// The rank-one structure of `network`, if it has one: every row full (N entries with the

@@ -12,8 +12,8 @@ namespace hmfnet {
 
 struct RotorState {
   int replicas = 1;
-  NodeIndex rows = 0;       ///< rows owned by this rank
-  NodeIndex first_row = 0;  ///< global index of the first owned row
+  NodeIndex rows = 0;         ///< rows owned by this rank
+  NodeIndex first_row = 0;    ///< global index of the first owned row
   std::vector<double> theta;  ///< rows * replicas
   std::vector<double> p;      ///< rows * replicas
 

@@ -17,7 +17,8 @@ NetworkFormat format_from_extension(const std::string& path) {
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (ext == "mtx" || ext == "mm") return NetworkFormat::matrix_market;
   if (ext == "h5" || ext == "hdf5") return NetworkFormat::hdf5;
-  if (ext == "txt" || ext == "edges" || ext == "el" || ext == "tsv") return NetworkFormat::edge_list;
+  if (ext == "txt" || ext == "edges" || ext == "el" || ext == "tsv")
+    return NetworkFormat::edge_list;
   throw InputError(path, 0,
                    "unknown network file extension (use .mtx/.mm, .h5/.hdf5, or "
                    ".txt/.edges/.el/.tsv for edge lists)");
@@ -25,18 +26,27 @@ NetworkFormat format_from_extension(const std::string& path) {
 
 ReadResult read_network(const std::string& path, const ReadOptions& options) {
   switch (format_from_extension(path)) {
-    case NetworkFormat::matrix_market: return read_matrix_market(path, options);
-    case NetworkFormat::hdf5: return read_network_hdf5(path);
-    case NetworkFormat::edge_list: return read_edge_list(path, options);
+    case NetworkFormat::matrix_market:
+      return read_matrix_market(path, options);
+    case NetworkFormat::hdf5:
+      return read_network_hdf5(path);
+    case NetworkFormat::edge_list:
+      return read_edge_list(path, options);
   }
   throw InputError(path, 0, "unreachable format");
 }
 
 void write_network(const std::string& path, const Network& network, const std::string& provenance) {
   switch (format_from_extension(path)) {
-    case NetworkFormat::matrix_market: write_matrix_market(path, network, provenance); return;
-    case NetworkFormat::hdf5: write_network_hdf5(path, network, provenance); return;
-    case NetworkFormat::edge_list: write_edge_list(path, network, provenance); return;
+    case NetworkFormat::matrix_market:
+      write_matrix_market(path, network, provenance);
+      return;
+    case NetworkFormat::hdf5:
+      write_network_hdf5(path, network, provenance);
+      return;
+    case NetworkFormat::edge_list:
+      write_edge_list(path, network, provenance);
+      return;
   }
 }
 

@@ -18,9 +18,12 @@ constexpr std::uint64_t k_target_seed_salt = 0x5f3759df2545f491ULL;
 
 double link(LinkProbability kind, double x) {
   switch (kind) {
-    case LinkProbability::capped: return std::min(1.0, x);
-    case LinkProbability::poisson: return -std::expm1(-x);
-    case LinkProbability::odds: return x / (1.0 + x);
+    case LinkProbability::capped:
+      return std::min(1.0, x);
+    case LinkProbability::poisson:
+      return -std::expm1(-x);
+    case LinkProbability::odds:
+      return x / (1.0 + x);
   }
   return 0.0;
 }
@@ -48,9 +51,12 @@ LinkProbability link_probability_from_name(const std::string& name) {
 
 std::string link_probability_name(LinkProbability kind) {
   switch (kind) {
-    case LinkProbability::capped: return "capped";
-    case LinkProbability::poisson: return "poisson";
-    case LinkProbability::odds: return "odds";
+    case LinkProbability::capped:
+      return "capped";
+    case LinkProbability::poisson:
+      return "poisson";
+    case LinkProbability::odds:
+      return "odds";
   }
   return "?";
 }

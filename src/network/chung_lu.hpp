@@ -28,8 +28,8 @@ LinkProbability link_probability_from_name(const std::string& name);
 std::string link_probability_name(LinkProbability link);
 
 struct PowerLaw {
-  double alpha = 2.5;  ///< exponent, > 2 (finite mean)
-  double d_min = 33;   ///< lower end, > 0
+  double alpha = 2.5;                                       ///< exponent, > 2 (finite mean)
+  double d_min = 33;                                        ///< lower end, > 0
   double cutoff = std::numeric_limits<double>::infinity();  ///< upper end, > d_min
 };
 

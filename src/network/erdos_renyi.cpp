@@ -31,7 +31,7 @@ void upper_row(NodeIndex n, NodeIndex rows, double log_miss, std::uint64_t seed,
 }
 
 struct UpperTriangle {
-  std::vector<EdgeOffset> count;  // upper entries per row
+  std::vector<EdgeOffset> count;               // upper entries per row
   std::vector<std::vector<NodeIndex>> blocks;  // one per thread, rows in block order
   std::vector<NodeIndex> block_first;
 };

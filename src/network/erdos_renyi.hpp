@@ -11,8 +11,8 @@
 namespace hmfnet {
 
 struct ErdosRenyiParameters {
-  NodeIndex n = 0;     ///< nodes, >= 1
-  double q = 0.0;      ///< link probability, 0 <= q <= 1
+  NodeIndex n = 0;  ///< nodes, >= 1
+  double q = 0.0;   ///< link probability, 0 <= q <= 1
   std::uint64_t seed = 0;
 };
 

@@ -1,9 +1,9 @@
 #include "network/network_builder.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
-#include <cmath>
 #include <tuple>
 
 #include "core/error.hpp"
@@ -11,7 +11,6 @@
 namespace hmfnet {
 
 namespace {
-
 
 std::string pair_name(const MatrixEntry& e, int base) {
   return "(" + std::to_string(static_cast<std::int64_t>(e.row) + base) + "," +
@@ -36,17 +35,18 @@ void check_weights(const std::string& source, const std::vector<MatrixEntry>& en
     if (e.weight > 0.0 && e.weight < std::numeric_limits<double>::min()) {
       char value[32];
       std::snprintf(value, sizeof value, "%.3g", e.weight);
-      throw InputError(source, e.line,
-                       std::string("weight ") + value +
-                           " is subnormal (below 2.2e-308): use a scale in which weights are normal "
-                           "numbers");
+      throw InputError(
+          source, e.line,
+          std::string("weight ") + value +
+              " is subnormal (below 2.2e-308): use a scale in which weights are normal "
+              "numbers");
     }
   }
 }
 
 // Sorted entries: two at the same position are a duplicate, reported at the later line.
-void reject_duplicates(const std::string& source, const std::vector<MatrixEntry>& sorted,
-                       int base, const char* what) {
+void reject_duplicates(const std::string& source, const std::vector<MatrixEntry>& sorted, int base,
+                       const char* what) {
   for (std::size_t k = 1; k < sorted.size(); ++k) {
     const auto& a = sorted[k - 1];
     const auto& b = sorted[k];

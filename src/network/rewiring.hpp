@@ -15,7 +15,7 @@
 namespace hmfnet {
 
 struct RewiringParameters {
-  double target_rho = 1.0;       ///< stop when rho crosses this value
+  double target_rho = 1.0;  ///< stop when rho crosses this value
   std::uint64_t seed = 0;
   std::int64_t max_attempts = 0;  ///< 0: 200 x edges
 };

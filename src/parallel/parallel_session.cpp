@@ -1,7 +1,7 @@
 #include "parallel/parallel_session.hpp"
 
-#include <Tpetra_Core.hpp>
 #include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_Core.hpp>
 #include <string>
 #include <vector>
 

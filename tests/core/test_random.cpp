@@ -55,8 +55,8 @@ TEST_CASE("Rng normal has mean 0 / variance 1 / kurtosis 3 within 4 sigma [n=1e6
   INFO("m1 " << m1 << " m2 " << m2 << " m4 " << m4);
   const double s = hmfnet::test::k_sigmas;
   REQUIRE(std::abs(m1) < s * std::sqrt(1.0 / n));
-  REQUIRE(std::abs(m2 - 1.0) < s * std::sqrt(2.0 / n));    // Var(z^2) = 2
-  REQUIRE(std::abs(m4 - 3.0) < s * std::sqrt(96.0 / n));   // Var(z^4) = 105 - 9
+  REQUIRE(std::abs(m2 - 1.0) < s * std::sqrt(2.0 / n));   // Var(z^2) = 2
+  REQUIRE(std::abs(m4 - 3.0) < s * std::sqrt(96.0 / n));  // Var(z^4) = 105 - 9
 }
 
 TEST_CASE("Rng below is uniform on 0..bound-1 by a chi-square test [bound=10]", "[random]") {

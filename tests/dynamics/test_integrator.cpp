@@ -1,7 +1,8 @@
 // Leap-frog on the network: conservation laws, order, reversibility, determinism.
+#include <omp.h>
+
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <omp.h>
 
 #include "dynamics/integrator.hpp"
 #include "dynamics/network_force.hpp"

@@ -19,8 +19,7 @@ TEST_CASE("Batch means give the iid standard error within 4 sigma of its estimat
   REQUIRE(std::abs(bm.mean()[0]) < 4 * expected);
 }
 
-TEST_CASE("Batch means widen the error for correlated samples [AR(1) phi=0.9]",
-          "[time_average]") {
+TEST_CASE("Batch means widen the error for correlated samples [AR(1) phi=0.9]", "[time_average]") {
   // AR(1) x_k = phi x_{k-1} + e_k with unit-variance e: the SEM of the mean is
   // sqrt((1+phi)/(1-phi) / (1-phi^2) / n) for long series.
   const std::int64_t n = 200000;

@@ -7,11 +7,11 @@
 #include "support/io_helpers.hpp"
 
 using namespace hmfnet;
+using Catch::Matchers::Contains;
 using hmfnet::test::input_error_from;
 using hmfnet::test::require_input_error;
 using hmfnet::test::TempDirectory;
 using hmfnet::test::write_text;
-using Catch::Matchers::Contains;
 
 namespace {
 
@@ -49,9 +49,10 @@ TEST_CASE("Edge-list reader shifts a 1-based file to 0-based nodes [1-based]", "
   CHECK(r.network.cols() == std::vector<NodeIndex>{1, 0, 2, 1});
 }
 
-TEST_CASE("Edge-list reader keeps isolated nodes past the largest index when given the count "
-          "[nodes]",
-          "[io][edge_list]") {
+TEST_CASE(
+    "Edge-list reader keeps isolated nodes past the largest index when given the count "
+    "[nodes]",
+    "[io][edge_list]") {
   TempDirectory dir;
   write_text(dir.file("e.txt"), "0 1\n");
   ReadOptions options;
@@ -93,9 +94,10 @@ TEST_CASE("Edge-list reader rejects 'u v' followed by 'v u' [duplicate]", "[io][
   require_input_error(e, dir.file("d.txt"), 4, "duplicate edge (0,1) (first given at line 2)");
 }
 
-TEST_CASE("Edge-list reader rejects the same line twice and prints 1-based indices as written "
-          "[duplicate / 1-based]",
-          "[io][edge_list]") {
+TEST_CASE(
+    "Edge-list reader rejects the same line twice and prints 1-based indices as written "
+    "[duplicate / 1-based]",
+    "[io][edge_list]") {
   TempDirectory dir;
   const auto e = read_error(dir, "d.txt", "1 2\n2 3\n1 2\n", base_one());
   require_input_error(e, dir.file("d.txt"), 3, "duplicate edge (1,2) (first given at line 1)");
@@ -247,9 +249,10 @@ TEST_CASE("Edge-list round trip is exact [weighted with self-loops / 17 digits]"
   test::require_same_network(r.network, net);
 }
 
-TEST_CASE("Edge-list round trip keeps trailing isolated nodes when the node count is given "
-          "[isolated nodes]",
-          "[io][edge_list]") {
+TEST_CASE(
+    "Edge-list round trip keeps trailing isolated nodes when the node count is given "
+    "[isolated nodes]",
+    "[io][edge_list]") {
   TempDirectory dir;
   const Network net = Network::from_undirected_edges(5, {{0, 1}, {1, 2}});
   write_edge_list(dir.file("i.txt"), net);
@@ -258,18 +261,20 @@ TEST_CASE("Edge-list round trip keeps trailing isolated nodes when the node coun
   test::require_same_network(read_edge_list(dir.file("i.txt"), options).network, net);
 }
 
-TEST_CASE("Edge-list round trip keeps trailing isolated nodes through the '# nodes' line "
-          "[isolated nodes]",
-          "[io][edge_list]") {
+TEST_CASE(
+    "Edge-list round trip keeps trailing isolated nodes through the '# nodes' line "
+    "[isolated nodes]",
+    "[io][edge_list]") {
   TempDirectory dir;
   const Network net = Network::from_undirected_edges(5, {{0, 1}, {1, 2}});
   write_edge_list(dir.file("i.txt"), net);
   test::require_same_network(read_edge_list(dir.file("i.txt")).network, net);
 }
 
-TEST_CASE("Edge-list reader refuses a '# nodes' line smaller than an index in the file "
-          "[nodes]",
-          "[io][edge_list]") {
+TEST_CASE(
+    "Edge-list reader refuses a '# nodes' line smaller than an index in the file "
+    "[nodes]",
+    "[io][edge_list]") {
   TempDirectory dir;
   test::write_text(dir.file("n.txt"), "# nodes 2\n0 1\n1 2\n");
   REQUIRE_THROWS_WITH(read_edge_list(dir.file("n.txt")), Catch::Contains("'# nodes 2'"));

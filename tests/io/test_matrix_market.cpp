@@ -7,11 +7,11 @@
 #include "support/io_helpers.hpp"
 
 using namespace hmfnet;
+using Catch::Matchers::Contains;
 using hmfnet::test::input_error_from;
 using hmfnet::test::require_input_error;
 using hmfnet::test::TempDirectory;
 using hmfnet::test::write_text;
-using Catch::Matchers::Contains;
 
 namespace {
 
@@ -191,9 +191,10 @@ TEST_CASE("Matrix Market reader rejects negative / NaN and infinite weights [bad
   require_input_error(e, dir.file("b.mtx"), 5, cause);
 }
 
-TEST_CASE("Matrix Market reader rejects both A_ij and A_ji given in a symmetric file "
-          "[duplicate]",
-          "[io][matrix_market]") {
+TEST_CASE(
+    "Matrix Market reader rejects both A_ij and A_ji given in a symmetric file "
+    "[duplicate]",
+    "[io][matrix_market]") {
   TempDirectory dir;
   const auto e = read_error(dir, "d.mtx", k_pattern_symmetric + "3 3 3\n2 1\n3 2\n1 2\n");
   require_input_error(e, dir.file("d.mtx"), 5, "duplicate edge (1,2) (first given at line 3)");
@@ -202,14 +203,14 @@ TEST_CASE("Matrix Market reader rejects both A_ij and A_ji given in a symmetric 
 TEST_CASE("Matrix Market reader rejects the same entry twice in a general file [duplicate]",
           "[io][matrix_market]") {
   TempDirectory dir;
-  const auto e =
-      read_error(dir, "d.mtx", k_real_general + "3 3 4\n1 2 1\n2 1 1\n1 2 1\n3 3 1\n");
+  const auto e = read_error(dir, "d.mtx", k_real_general + "3 3 4\n1 2 1\n2 1 1\n1 2 1\n3 3 1\n");
   require_input_error(e, dir.file("d.mtx"), 5, "duplicate entry (1,2) (first given at line 3)");
 }
 
-TEST_CASE("Matrix Market reader rejects a duplicate even when one copy is an explicit zero "
-          "[duplicate / zero]",
-          "[io][matrix_market]") {
+TEST_CASE(
+    "Matrix Market reader rejects a duplicate even when one copy is an explicit zero "
+    "[duplicate / zero]",
+    "[io][matrix_market]") {
   TempDirectory dir;
   const auto e = read_error(dir, "d.mtx", k_real_symmetric + "3 3 2\n2 1 0\n1 2 3\n");
   require_input_error(e, dir.file("d.mtx"), 4, "duplicate edge (1,2)");
@@ -294,15 +295,15 @@ TEST_CASE("Matrix Market reader rejects an asymmetric general file by default [a
           "[io][matrix_market]") {
   TempDirectory dir;
   // (1,2) has no transpose; (2,3) and (3,2) differ in weight: three unmatched entries.
-  const auto e = read_error(dir, "a.mtx",
-                            k_real_general + "3 3 4\n1 2 1\n2 3 1\n3 2 2\n1 1 5\n");
+  const auto e = read_error(dir, "a.mtx", k_real_general + "3 3 4\n1 2 1\n2 3 1\n3 2 2\n1 1 5\n");
   require_input_error(e, dir.file("a.mtx"), 3, "matrix is not symmetric: entry (1,2)");
   CHECK_THAT(e->cause(), Contains("3 such entries") && Contains("--symmetrize"));
 }
 
-TEST_CASE("Matrix Market reader symmetrises an asymmetric general file as (A+A^T)/2 on request "
-          "[symmetrize]",
-          "[io][matrix_market]") {
+TEST_CASE(
+    "Matrix Market reader symmetrises an asymmetric general file as (A+A^T)/2 on request "
+    "[symmetrize]",
+    "[io][matrix_market]") {
   TempDirectory dir;
   write_text(dir.file("a.mtx"), k_real_general + "3 3 4\n1 2 1\n2 3 1\n3 2 2\n1 1 5\n");
   ReadOptions options;
@@ -318,9 +319,10 @@ TEST_CASE("Matrix Market reader symmetrises an asymmetric general file as (A+A^T
   CHECK(r.network.weights() == std::vector<double>{5.0, 0.5, 0.5, 1.5, 1.5});
 }
 
-TEST_CASE("Matrix Market reader symmetrising a pattern general file gives weights 1/2 "
-          "[symmetrize / pattern]",
-          "[io][matrix_market]") {
+TEST_CASE(
+    "Matrix Market reader symmetrising a pattern general file gives weights 1/2 "
+    "[symmetrize / pattern]",
+    "[io][matrix_market]") {
   TempDirectory dir;
   write_text(dir.file("p.mtx"),
              "%%MatrixMarket matrix coordinate pattern general\n3 3 3\n1 2\n2 1\n3 1\n");
@@ -344,10 +346,9 @@ TEST_CASE("Matrix Market round trip is exact [0/1 with self-loops]", "[io][matri
   const Network net = test::unweighted_network_with_loops();
   write_matrix_market(dir.file("u.mtx"), net, "{\"generator\": \"test\"}\nsecond line");
   const std::string text = test::read_text(dir.file("u.mtx"));
-  CHECK_THAT(text, Catch::Matchers::StartsWith(k_pattern_symmetric +
-                                                "% {\"generator\": \"test\"}\n"
-                                                "% second line\n"
-                                                "6 6 7\n"));
+  CHECK_THAT(text, Catch::Matchers::StartsWith(k_pattern_symmetric + "% {\"generator\": \"test\"}\n"
+                                                                     "% second line\n"
+                                                                     "6 6 7\n"));
   const ReadResult r = read_matrix_market(dir.file("u.mtx"));
   CHECK(r.warnings.empty());
   test::require_same_network(r.network, net);
@@ -369,8 +370,8 @@ TEST_CASE("Matrix Market writer to a missing directory throws and creates nothin
           "[io][matrix_market]") {
   TempDirectory dir;
   const std::string path = dir.file("missing/out.mtx");
-  const auto e = input_error_from(
-      [&] { write_matrix_market(path, test::unweighted_network_with_loops()); });
+  const auto e =
+      input_error_from([&] { write_matrix_market(path, test::unweighted_network_with_loops()); });
   require_input_error(e, path, 0, "does not exist");
   CHECK(dir.listing().empty());
 }

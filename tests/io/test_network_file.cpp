@@ -50,9 +50,10 @@ TEST_CASE("Network file round trip is exact in every format [weighted and 0/1 wi
   CHECK(dir.listing() == std::vector<std::string>{name});
 }
 
-TEST_CASE("Network file writer refuses an unknown extension before creating anything "
-          "[extensions]",
-          "[io][network_file]") {
+TEST_CASE(
+    "Network file writer refuses an unknown extension before creating anything "
+    "[extensions]",
+    "[io][network_file]") {
   TempDirectory dir;
   const auto e = input_error_from(
       [&] { write_network(dir.file("n.csv"), test::unweighted_network_with_loops()); });
@@ -65,8 +66,8 @@ TEST_CASE("Network file reader passes the asymmetry policy to Matrix Market [sym
   TempDirectory dir;
   test::write_text(dir.file("g.mtx"),
                    "%%MatrixMarket matrix coordinate pattern general\n2 2 1\n1 2\n");
-  require_input_error(input_error_from([&] { read_network(dir.file("g.mtx")); }),
-                      dir.file("g.mtx"), 3, "matrix is not symmetric");
+  require_input_error(input_error_from([&] { read_network(dir.file("g.mtx")); }), dir.file("g.mtx"),
+                      3, "matrix is not symmetric");
   ReadOptions options;
   options.asymmetry = AsymmetryPolicy::symmetrize;
   const ReadResult r = read_network(dir.file("g.mtx"), options);

@@ -1,8 +1,9 @@
 // hmfnet's HDF5 network file: exact round trips, and refusal (an InputError naming the file) of
 // files that are not HDF5, not ours, or whose CSR arrays were corrupted after writing.
+#include <hdf5.h>
+
 #include <catch2/catch.hpp>
 #include <cstdint>
-#include <hdf5.h>
 #include <limits>
 
 #include "io/hdf5_file.hpp"
@@ -10,10 +11,10 @@
 #include "support/io_helpers.hpp"
 
 using namespace hmfnet;
+using Catch::Matchers::Contains;
 using hmfnet::test::input_error_from;
 using hmfnet::test::require_input_error;
 using hmfnet::test::TempDirectory;
-using Catch::Matchers::Contains;
 
 namespace {
 
@@ -118,9 +119,10 @@ TEST_CASE("HDF5 network reader refuses a missing file [no file]", "[io][hdf5]") 
   require_input_error(e, dir.file("absent.h5"), 0, "not an HDF5 file (or cannot be read)");
 }
 
-TEST_CASE("HDF5 network reader refuses an HDF5 file without the hmfnet_format attribute "
-          "[foreign HDF5]",
-          "[io][hdf5]") {
+TEST_CASE(
+    "HDF5 network reader refuses an HDF5 file without the hmfnet_format attribute "
+    "[foreign HDF5]",
+    "[io][hdf5]") {
   TempDirectory dir;
   const std::string path = dir.file("foreign.h5");
   const hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
@@ -131,9 +133,10 @@ TEST_CASE("HDF5 network reader refuses an HDF5 file without the hmfnet_format at
   require_input_error(e, path, 0, "not an hmfnet network file");
 }
 
-TEST_CASE("HDF5 network reader refuses another hmfnet file kind and an unknown format version "
-          "[format]",
-          "[io][hdf5]") {
+TEST_CASE(
+    "HDF5 network reader refuses another hmfnet file kind and an unknown format version "
+    "[format]",
+    "[io][hdf5]") {
   TempDirectory dir;
   SECTION("hmfnet_format is not 'network'") {
     const std::string path = dir.file("run.h5");
@@ -152,9 +155,10 @@ TEST_CASE("HDF5 network reader refuses another hmfnet file kind and an unknown f
   }
 }
 
-TEST_CASE("HDF5 network reader refuses a column index out of range written after the fact "
-          "[corrupted col]",
-          "[io][hdf5]") {
+TEST_CASE(
+    "HDF5 network reader refuses a column index out of range written after the fact "
+    "[corrupted col]",
+    "[io][hdf5]") {
   TempDirectory dir;
   const std::string path = valid_file(dir);
   std::vector<std::int32_t> cols = read_network_hdf5(path).network.cols();
@@ -177,9 +181,10 @@ TEST_CASE("HDF5 network reader refuses a stored matrix that is not symmetric [co
   require_input_error(e, path, 0, "/network: entry (1,5) has no transpose (5,1)");
 }
 
-TEST_CASE("HDF5 network reader refuses row pointers that run past the column array "
-          "[corrupted row_ptr]",
-          "[io][hdf5]") {
+TEST_CASE(
+    "HDF5 network reader refuses row pointers that run past the column array "
+    "[corrupted row_ptr]",
+    "[io][hdf5]") {
   TempDirectory dir;
   SECTION("pointer one past the end in the middle, columns ascending to the end") {
     // Two self-loops: col = {0, 1}, row_ptr = {0, 1, 2}. With row_ptr[1] = 3 row 0 claims
@@ -218,9 +223,10 @@ TEST_CASE("HDF5 network reader refuses row pointers that run past the column arr
   }
 }
 
-TEST_CASE("HDF5 network reader refuses a non-positive weight and a missing weights dataset "
-          "[corrupted weights]",
-          "[io][hdf5]") {
+TEST_CASE(
+    "HDF5 network reader refuses a non-positive weight and a missing weights dataset "
+    "[corrupted weights]",
+    "[io][hdf5]") {
   TempDirectory dir;
   const std::string path = dir.file("w.h5");
   write_network_hdf5(path, test::awkward_weighted_network());
@@ -245,9 +251,10 @@ TEST_CASE("HDF5 network reader refuses a non-positive weight and a missing weigh
   }
 }
 
-TEST_CASE("HDF5 network reader refuses a missing group or dataset and a wrong node count "
-          "[incomplete]",
-          "[io][hdf5]") {
+TEST_CASE(
+    "HDF5 network reader refuses a missing group or dataset and a wrong node count "
+    "[incomplete]",
+    "[io][hdf5]") {
   TempDirectory dir;
   const std::string path = valid_file(dir);
   SECTION("no /network") {
@@ -285,8 +292,8 @@ TEST_CASE("HDF5 network writer to a missing directory throws and creates nothing
           "[io][hdf5]") {
   TempDirectory dir;
   const std::string path = dir.file("missing/net.h5");
-  const auto e = input_error_from(
-      [&] { write_network_hdf5(path, test::unweighted_network_with_loops()); });
+  const auto e =
+      input_error_from([&] { write_network_hdf5(path, test::unweighted_network_with_loops()); });
   require_input_error(e, path, 0, "does not exist");
   CHECK(dir.listing().empty());
 }

@@ -1,5 +1,5 @@
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <numeric>
 
@@ -13,9 +13,12 @@ namespace {
 
 double probability(LinkProbability kind, double x) {
   switch (kind) {
-    case LinkProbability::capped: return std::min(1.0, x);
-    case LinkProbability::poisson: return 1.0 - std::exp(-x);
-    case LinkProbability::odds: return x / (1.0 + x);
+    case LinkProbability::capped:
+      return std::min(1.0, x);
+    case LinkProbability::poisson:
+      return 1.0 - std::exp(-x);
+    case LinkProbability::odds:
+      return x / (1.0 + x);
   }
   return 0.0;
 }
@@ -46,7 +49,8 @@ TEST_CASE("Chung-Lu degrees match the expected degrees in five target quantiles 
   const auto w = power_law_targets(n, {2.5, 10.0, 1.0e9}, 17);
   std::vector<double> sorted = w;
   std::sort(sorted.begin(), sorted.end());
-  for (const auto kind : {LinkProbability::capped, LinkProbability::poisson, LinkProbability::odds}) {
+  for (const auto kind :
+       {LinkProbability::capped, LinkProbability::poisson, LinkProbability::odds}) {
     const Network net = chung_lu(w, kind, 23);
     REQUIRE(Network::check_csr(net.size(), net.row_ptr(), net.cols(), net.weights()).empty());
     REQUIRE(net.self_loops() == 0);

@@ -27,7 +27,8 @@ double rho_by_edge_averages(const Network& net) {
 }  // namespace
 
 TEST_CASE("rho equals the edge-average definition of eq:rhodef", "[degree_statistics]") {
-  for (const Network& net : {test::star(12), erdos_renyi({800, 0.02, 3}), test::two_cliques(5, 9)}) {
+  for (const Network& net :
+       {test::star(12), erdos_renyi({800, 0.02, 3}), test::two_cliques(5, 9)}) {
     REQUIRE_THAT(degree_correlation(net),
                  Catch::Matchers::WithinRel(rho_by_edge_averages(net), test::k_sum_rel));
   }
@@ -40,7 +41,9 @@ TEST_CASE("rho closed forms: 1 on a regular graph / 4(N-1)/N^2 on a star", "[deg
                Catch::Matchers::WithinRel(4 * (n - 1) / (n * n), 1e-14));
 }
 
-TEST_CASE("Mean degree is 2 edges / N for a 0/1 network without self-loops", "[degree_statistics]") {
+TEST_CASE("Mean degree is 2 edges / N for a 0/1 network without self-loops",
+          "[degree_statistics]") {
   const Network net = erdos_renyi({1000, 0.05, 2});
-  REQUIRE_THAT(mean_degree(net), Catch::Matchers::WithinRel(2.0 * static_cast<double>(net.edges()) / 1000.0, 1e-14));
+  REQUIRE_THAT(mean_degree(net),
+               Catch::Matchers::WithinRel(2.0 * static_cast<double>(net.edges()) / 1000.0, 1e-14));
 }

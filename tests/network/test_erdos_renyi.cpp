@@ -1,6 +1,7 @@
+#include <omp.h>
+
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <omp.h>
 
 #include "core/error.hpp"
 #include "network/erdos_renyi.hpp"
@@ -57,8 +58,10 @@ TEST_CASE("Erdos-Renyi edge probability is uniform over the matrix: early and la
   const double q = 0.05;
   const Network net = erdos_renyi({n, q, 9});
   double first = 0.0, last = 0.0;
-  for (NodeIndex i = 0; i < 200; ++i) first += static_cast<double>(net.row_end(i) - net.row_begin(i));
-  for (NodeIndex i = n - 200; i < n; ++i) last += static_cast<double>(net.row_end(i) - net.row_begin(i));
+  for (NodeIndex i = 0; i < 200; ++i)
+    first += static_cast<double>(net.row_end(i) - net.row_begin(i));
+  for (NodeIndex i = n - 200; i < n; ++i)
+    last += static_cast<double>(net.row_end(i) - net.row_begin(i));
   const double mean = 200 * (n - 1) * q, sd = std::sqrt(200 * (n - 1) * q * (1 - q));
   INFO("first rows " << first << " last rows " << last << " expected " << mean);
   REQUIRE(std::abs(first - mean) < test::k_sigmas * sd);

@@ -7,9 +7,9 @@
 #include "support/io_helpers.hpp"
 
 using namespace hmfnet;
+using Catch::Matchers::Contains;
 using hmfnet::test::input_error_from;
 using hmfnet::test::require_input_error;
-using Catch::Matchers::Contains;
 
 namespace {
 
@@ -21,9 +21,10 @@ BuildOptions general(AsymmetryPolicy policy, int base = 1) {
 
 }  // namespace
 
-TEST_CASE("Network builder mirrors symmetric entries and sorts rows and keeps a self-loop once "
-          "[symmetric]",
-          "[network_builder]") {
+TEST_CASE(
+    "Network builder mirrors symmetric entries and sorts rows and keeps a self-loop once "
+    "[symmetric]",
+    "[network_builder]") {
   // Entries in scrambled order and orientation: {2,0}, {1,2}, {1,1}.
   const BuildResult r = build_network(k_source, 4, {{2, 0, 1, 1}, {1, 2, 1, 2}, {1, 1, 1, 3}}, {});
   CHECK(r.warnings.empty());
@@ -59,8 +60,9 @@ TEST_CASE("Network builder rejects a NaN or infinite or negative weight at its l
       {0.5 * std::numeric_limits<double>::min(), "is subnormal"},
   }));
   INFO("weight " << weight);
-  const auto e = input_error_from(
-      [&, w = weight] { build_network(k_source, 3, {{0, 1, 1, 4}, {1, 2, w, 9}}, {}); });
+  const auto e = input_error_from([&, w = weight] {
+    build_network(k_source, 3, {{0, 1, 1, 4}, {1, 2, w, 9}}, {});
+  });
   require_input_error(e, k_source, 9, cause);
 }
 
@@ -72,29 +74,34 @@ TEST_CASE("Network builder reports the first bad weight in file order [two bad w
   require_input_error(e, k_source, 2, "negative weight");
 }
 
-TEST_CASE("Network builder rejects a symmetric pair given in both orientations at the later "
-          "line [duplicate]",
-          "[network_builder]") {
+TEST_CASE(
+    "Network builder rejects a symmetric pair given in both orientations at the later "
+    "line [duplicate]",
+    "[network_builder]") {
   SECTION("0-based names") {
-    const auto e = input_error_from(
-        [] { build_network(k_source, 3, {{2, 1, 1, 7}, {0, 1, 1, 8}, {1, 2, 1, 3}}, {}); });
+    const auto e = input_error_from([] {
+      build_network(k_source, 3, {{2, 1, 1, 7}, {0, 1, 1, 8}, {1, 2, 1, 3}}, {});
+    });
     require_input_error(e, k_source, 7, "duplicate edge (1,2) (first given at line 3)");
   }
   SECTION("1-based names") {
     BuildOptions options;
     options.index_base = 1;
-    const auto e = input_error_from(
-        [&] { build_network(k_source, 3, {{0, 0, 1, 1}, {0, 0, 2, 2}}, options); });
+    const auto e = input_error_from([&] {
+      build_network(k_source, 3, {{0, 0, 1, 1}, {0, 0, 2, 2}}, options);
+    });
     require_input_error(e, k_source, 2, "duplicate edge (1,1) (first given at line 1)");
   }
 }
 
-TEST_CASE("Network builder rejects a duplicate whose first copy is an explicit zero "
-          "[duplicate / zero]",
-          "[network_builder]") {
+TEST_CASE(
+    "Network builder rejects a duplicate whose first copy is an explicit zero "
+    "[duplicate / zero]",
+    "[network_builder]") {
   SECTION("symmetric") {
-    const auto e = input_error_from(
-        [] { build_network(k_source, 3, {{1, 0, 0.0, 3}, {0, 1, 2.0, 4}, {1, 2, 1, 5}}, {}); });
+    const auto e = input_error_from([] {
+      build_network(k_source, 3, {{1, 0, 0.0, 3}, {0, 1, 2.0, 4}, {1, 2, 1, 5}}, {});
+    });
     require_input_error(e, k_source, 4, "duplicate edge (0,1)");
   }
   SECTION("general") {
@@ -133,20 +140,21 @@ TEST_CASE("Network builder rejects an empty network naming the file without a li
   }
 }
 
-TEST_CASE("Network builder accepts a general matrix equal to its transpose without warning "
-          "[general / symmetric]",
-          "[network_builder]") {
-  const BuildResult r = build_network(
-      k_source, 3, {{0, 1, 2.0, 1}, {2, 2, 3.0, 2}, {1, 0, 2.0, 3}},
-      general(AsymmetryPolicy::reject));
+TEST_CASE(
+    "Network builder accepts a general matrix equal to its transpose without warning "
+    "[general / symmetric]",
+    "[network_builder]") {
+  const BuildResult r = build_network(k_source, 3, {{0, 1, 2.0, 1}, {2, 2, 3.0, 2}, {1, 0, 2.0, 3}},
+                                      general(AsymmetryPolicy::reject));
   CHECK(r.warnings.empty());
   CHECK(r.network.cols() == std::vector<NodeIndex>{1, 0, 2});
   CHECK(r.network.weights() == std::vector<double>{2.0, 2.0, 3.0});
 }
 
-TEST_CASE("Network builder rejects an asymmetric general matrix at the first unmatched entry "
-          "[general / reject]",
-          "[network_builder]") {
+TEST_CASE(
+    "Network builder rejects an asymmetric general matrix at the first unmatched entry "
+    "[general / reject]",
+    "[network_builder]") {
   // (3,1) has no transpose; (1,2) and (2,1) differ: three entries without an equal transpose.
   const auto e = input_error_from([] {
     build_network(k_source, 3, {{2, 0, 1.0, 4}, {0, 1, 1.0, 5}, {1, 0, 4.0, 6}},
@@ -156,12 +164,13 @@ TEST_CASE("Network builder rejects an asymmetric general matrix at the first unm
   CHECK_THAT(e->cause(), Contains("(3 such entries)"));
 }
 
-TEST_CASE("Network builder symmetrises as (A+A^T)/2 and counts the unmatched entries "
-          "[general / symmetrize]",
-          "[network_builder]") {
-  const BuildResult r = build_network(
-      k_source, 3, {{2, 0, 1.0, 4}, {0, 1, 1.0, 5}, {1, 0, 4.0, 6}, {1, 1, 3.0, 7}},
-      general(AsymmetryPolicy::symmetrize));
+TEST_CASE(
+    "Network builder symmetrises as (A+A^T)/2 and counts the unmatched entries "
+    "[general / symmetrize]",
+    "[network_builder]") {
+  const BuildResult r =
+      build_network(k_source, 3, {{2, 0, 1.0, 4}, {0, 1, 1.0, 5}, {1, 0, 4.0, 6}, {1, 1, 3.0, 7}},
+                    general(AsymmetryPolicy::symmetrize));
   REQUIRE(r.warnings.size() == 1);
   CHECK(r.warnings.front() == k_source +
                                   ": warning: matrix is not symmetric (3 entries without an "
@@ -172,9 +181,10 @@ TEST_CASE("Network builder symmetrises as (A+A^T)/2 and counts the unmatched ent
   CHECK(r.network.weights() == std::vector<double>{2.5, 0.5, 2.5, 3.0, 0.5});
 }
 
-TEST_CASE("Network builder stores a symmetrised matrix whose weights are all 1 as 0/1 "
-          "[general / symmetrize / all 1]",
-          "[network_builder]") {
+TEST_CASE(
+    "Network builder stores a symmetrised matrix whose weights are all 1 as 0/1 "
+    "[general / symmetrize / all 1]",
+    "[network_builder]") {
   const BuildResult r =
       build_network(k_source, 2, {{0, 1, 2.0, 1}}, general(AsymmetryPolicy::symmetrize));
   REQUIRE(r.warnings.size() == 1);

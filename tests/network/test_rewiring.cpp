@@ -43,8 +43,7 @@ TEST_CASE("Rewiring the same network with the same seed gives the same network",
           rewire_to_correlation(net, {target, 9, 0}).network.cols());
 }
 
-TEST_CASE("Rewiring reports an unreachable target instead of returning short of it",
-          "[rewiring]") {
+TEST_CASE("Rewiring reports an unreachable target instead of returning short of it", "[rewiring]") {
   const Network net = scale_free();
   REQUIRE_THROWS_AS(rewire_to_correlation(net, {50.0, 1, 20000}), ConvergenceError);
 }

@@ -20,7 +20,7 @@ TEST_CASE("Connected components of two cliques and an isolated node", "[structur
 TEST_CASE("Bipartite detection: stars and K_ab yes / odd cycles and self-loops no", "[structure]") {
   REQUIRE(is_bipartite(test::star(10)));
   REQUIRE(is_bipartite(test::complete_bipartite(3, 5)));
-  REQUIRE(is_bipartite(test::circulant(10, 1)));       // even ring
+  REQUIRE(is_bipartite(test::circulant(10, 1)));        // even ring
   REQUIRE_FALSE(is_bipartite(test::circulant(11, 1)));  // odd ring
   REQUIRE_FALSE(is_bipartite(test::complete(3)));
   REQUIRE_FALSE(is_bipartite(Network::from_undirected_edges(2, {{0, 1}, {1, 1}})));

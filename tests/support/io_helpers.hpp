@@ -1,6 +1,8 @@
 #pragma once
 // Helpers for the reader/writer tests: a scratch directory removed at scope exit, small text
 // files written into it, and checks that an InputError names the file, the line and the cause.
+#include <unistd.h>
+
 #include <algorithm>
 #include <atomic>
 #include <catch2/catch.hpp>
@@ -10,7 +12,6 @@
 #include <sstream>
 #include <string>
 #include <tuple>
-#include <unistd.h>
 #include <vector>
 
 #include "core/error.hpp"
@@ -24,8 +25,8 @@ class TempDirectory {
  public:
   TempDirectory() {
     static std::atomic<int> counter{0};
-    const std::string name = "hmfnet_test_" + std::to_string(::getpid()) + "_" +
-                             std::to_string(counter++);
+    const std::string name =
+        "hmfnet_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++);
     m_path = std::filesystem::temp_directory_path() / name;
     std::filesystem::remove_all(m_path);
     std::filesystem::create_directories(m_path);
