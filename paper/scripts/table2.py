@@ -35,18 +35,13 @@ def main():
     hmfdata.style()
     fig, (a, b, c) = plt.subplots(1, 3, figsize=(11, 3.6))
     alpha = rows["alpha"]
-    a.errorbar(alpha, rows["lambda mean"], yerr=rows["lambda seed sd"], fmt="o", capsize=3,
-               label="ours (seed sd)")
-    a.plot(alpha, rows["paper lambda"], "x", ms=8, label="paper")
-    a.set_xlabel("alpha")
-    a.set_ylabel("lambda")
-    a.legend()
-    b.errorbar(alpha, rows["rho mean"], yerr=rows["rho seed sd"], fmt="o", capsize=3,
-               label="ours (seed sd)")
-    b.plot(alpha, rows["paper rho"], "x", ms=8, label="paper")
-    b.set_xlabel("alpha")
-    b.set_ylabel("rho (eq:rhodef)")
-    b.legend()
+    for axis, quantity, label in ((a, "lambda", "lambda"), (b, "rho", "rho (eq:rhodef)")):
+        axis.errorbar(alpha, rows[quantity + " mean"], yerr=rows[quantity + " seed sd"], fmt="o",
+                      capsize=3, label="ours (seed sd)")
+        axis.plot(alpha, rows["paper " + quantity], "x", ms=8, label="paper")
+        axis.set_xlabel("alpha")
+        axis.set_ylabel(label)
+        axis.legend()
     c.plot(rewired["rho"], rewired["lambda"], "o-", label="ours: start and rewired")
     c.plot([0.78, 0.97, 1.09], [282, 364, 459], "x--", ms=8, label="paper")
     c.set_xlabel("rho")

@@ -236,16 +236,14 @@ CheckpointRecord capture(const RunPosition& position, const SegmentState& segmen
                          const RowExchange& exchange) {
   CheckpointRecord record;
   Capture visitor(record, replicas, exchange);
-  visit_position_fields(position, visitor);
-  visit_fields(segment, visitor);
+  visit_fields(position, segment, visitor);
   return record;
 }
 
 void restore(const CheckpointRecord& record, RunPosition& position, SegmentState& segment,
              int replicas, const RowExchange& exchange) {
   Restore visitor(record, replicas, exchange);
-  visit_position_fields(position, visitor);
-  visit_fields(segment, visitor);
+  visit_fields(position, segment, visitor);
 }
 
 void write_checkpoint(const std::string& path, const Checkpoint& c) {

@@ -4,7 +4,7 @@
 // checkpoint capture (gather over ranks) and restore (scatter), the checkpoint file's writer and
 // reader, and its checksum (checkpoint.cpp). Adding an observable is one member here and one line
 // in `visit_fields`; tests/dynamics/test_segment_state.cpp fails when a member is missing from
-// the list (it counts the members of the aggregate) or is not restored by a checkpoint.
+// the list (it counts the members of both aggregates) or is not restored by a checkpoint.
 //
 // The field kinds a visitor sees:
 //   count(name, int64&)                      equal on every rank
@@ -38,21 +38,6 @@ struct SegmentState {
   NodeStatistics stats;                    ///< node_data only
 };
 
-/// The one list of SegmentState's fields (see the header comment for the kinds).
-template <class State, class Visitor>
-void visit_fields(State& s, Visitor& v) {
-  v.count("segment_step", s.step);
-  v.batch_means("batch", s.R);
-  v.replicated("energy0", s.energy0);
-  v.replicated("momentum0", s.momentum0);
-  v.replicated("momentum_scale", s.momentum_scale);
-  v.replicated("energy_err_max", s.energy_err_max);
-  v.replicated("momentum_drift_max", s.momentum_drift_max);
-  v.rows("theta_T1", s.theta_T1, 0);
-  v.rows("R_node_sum", s.R_node_sum, 0);
-  v.node_statistics("node", s.stats);
-}
-
 /// Where a run stands in its schedule, and the rotors: with a SegmentState and the results so far,
 /// all that a bit-identical resume needs.
 struct RunPosition {
@@ -63,14 +48,26 @@ struct RunPosition {
   std::vector<double> theta, p;      ///< rows x replicas
 };
 
-template <class State, class Visitor>
-void visit_position_fields(State& s, Visitor& v) {
-  v.count("k_index", s.k_index);
-  v.count("steps_total", s.steps_total);
-  v.count("evaluations", s.evaluations);
-  v.real("integration_seconds", s.integration_seconds);
-  v.rows("theta", s.theta, 0);
-  v.rows("p", s.p, 0);
+/// The one list of what a checkpoint holds besides the results (see the header comment for the
+/// kinds): the position, then the segment's accumulators.
+template <class Position, class Segment, class Visitor>
+void visit_fields(Position& position, Segment& segment, Visitor& v) {
+  v.count("k_index", position.k_index);
+  v.count("steps_total", position.steps_total);
+  v.count("evaluations", position.evaluations);
+  v.real("integration_seconds", position.integration_seconds);
+  v.rows("theta", position.theta, 0);
+  v.rows("p", position.p, 0);
+  v.count("segment_step", segment.step);
+  v.batch_means("batch", segment.R);
+  v.replicated("energy0", segment.energy0);
+  v.replicated("momentum0", segment.momentum0);
+  v.replicated("momentum_scale", segment.momentum_scale);
+  v.replicated("energy_err_max", segment.energy_err_max);
+  v.replicated("momentum_drift_max", segment.momentum_drift_max);
+  v.rows("theta_T1", segment.theta_T1, 0);
+  v.rows("R_node_sum", segment.R_node_sum, 0);
+  v.node_statistics("node", segment.stats);
 }
 
 }  // namespace hmfnet

@@ -73,26 +73,25 @@ void validate(const SimulationParameters& p) {
 }
 
 nlohmann::json to_json(const SimulationParameters& p) {
-  nlohmann::json j;
-  j["h"] = p.h;
-  j["T"] = p.duration;
-  j["transient"] = p.transient;
-  j["K"] = p.K;
-  j["continue_state"] = p.continue_state;
-  j["replicas"] = nlohmann::json::array();
+  nlohmann::json replicas = nlohmann::json::array(), steps = nlohmann::json::array();
   for (const auto& r : p.replicas) {
-    j["replicas"].push_back({{"omega", r.omega}, {"sigma0", r.sigma0}, {"seed", r.seed}});
+    replicas.push_back({{"omega", r.omega}, {"sigma0", r.sigma0}, {"seed", r.seed}});
   }
-  j["record_stride"] = p.record_stride;
-  j["batches"] = p.batches;
-  j["energy_tolerance"] = p.energy_tolerance;
-  j["node_data"] = p.node_data;
-  j["rotor_node"] = p.rotor_node;
-  j["phase_bins"] = p.phase_bins;
-  j["integrator"] = p.integrator;
-  j["steps"] = nlohmann::json::array();
-  for (const auto& s : p.steps) j["steps"].push_back({{"integrator", s.integrator}, {"h", s.h}});
-  return j;
+  for (const auto& s : p.steps) steps.push_back({{"integrator", s.integrator}, {"h", s.h}});
+  return {{"h", p.h},
+          {"T", p.duration},
+          {"transient", p.transient},
+          {"K", p.K},
+          {"continue_state", p.continue_state},
+          {"replicas", replicas},
+          {"record_stride", p.record_stride},
+          {"batches", p.batches},
+          {"energy_tolerance", p.energy_tolerance},
+          {"node_data", p.node_data},
+          {"rotor_node", p.rotor_node},
+          {"phase_bins", p.phase_bins},
+          {"integrator", p.integrator},
+          {"steps", steps}};
 }
 
 std::string fingerprint(const SimulationParameters& p, NodeIndex n, EdgeOffset nnz) {

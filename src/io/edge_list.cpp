@@ -1,12 +1,12 @@
 #include "io/edge_list.hpp"
 
-#include <cstdio>
 #include <fstream>
 #include <limits>
 #include <sstream>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "io/entry_lines.hpp"
 #include "io/node_count_limit.hpp"
 #include "io/text_scanner.hpp"
 
@@ -97,18 +97,7 @@ void write_edge_list(const std::string& path, const Network& network, const std:
     out << k_nodes_comment << network.size() << '\n';
     std::istringstream lines(comment);
     for (std::string c; std::getline(lines, c);) out << "# " << c << '\n';
-    char buffer[32];
-    for (NodeIndex i = 0; i < network.size(); ++i) {
-      for (const auto [j, w] : network.row(i)) {
-        if (j < i) continue;
-        out << i << ' ' << j;
-        if (network.weighted()) {
-          std::snprintf(buffer, sizeof buffer, " %.17g", w);
-          out << buffer;
-        }
-        out << '\n';
-      }
-    }
+    write_entry_lines(out, network, Triangle::upper, 0);
     out.flush();
     if (!out) throw InputError(path, 0, "write failed (disk full?)");
   }

@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstdio>
 #include <fstream>
 #include <limits>
 #include <sstream>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "io/entry_lines.hpp"
 #include "io/node_count_limit.hpp"
 #include "io/text_scanner.hpp"
 
@@ -148,18 +148,7 @@ void write_matrix_market(const std::string& path, const Network& network,
     std::istringstream lines(comment);
     for (std::string c; std::getline(lines, c);) out << "% " << c << '\n';
     out << network.size() << ' ' << network.size() << ' ' << network.edges() << '\n';
-    char buffer[32];
-    for (NodeIndex i = 0; i < network.size(); ++i) {
-      for (const auto [j, w] : network.row(i)) {
-        if (j > i) break;  // lower triangle, rows sorted
-        out << i + 1 << ' ' << j + 1;
-        if (network.weighted()) {
-          std::snprintf(buffer, sizeof buffer, " %.17g", w);
-          out << buffer;
-        }
-        out << '\n';
-      }
-    }
+    write_entry_lines(out, network, Triangle::lower, 1);
     out.flush();
     if (!out) throw InputError(path, 0, "write failed (disk full?)");
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
+#include <iterator>
 #include <numeric>
 
 #include "core/error.hpp"
@@ -42,23 +43,22 @@ void check_law(const PowerLaw& law) {
 
 }  // namespace
 
+namespace {
+
+// In the order of the enumerators of LinkProbability.
+constexpr const char* k_link_names[] = {"capped", "poisson", "odds"};
+
+}  // namespace
+
 LinkProbability link_probability_from_name(const std::string& name) {
-  if (name == "capped") return LinkProbability::capped;
-  if (name == "poisson") return LinkProbability::poisson;
-  if (name == "odds") return LinkProbability::odds;
+  for (std::size_t k = 0; k < std::size(k_link_names); ++k) {
+    if (name == k_link_names[k]) return static_cast<LinkProbability>(k);
+  }
   throw ParameterError("link probability", name, "capped, poisson, odds");
 }
 
 std::string link_probability_name(LinkProbability kind) {
-  switch (kind) {
-    case LinkProbability::capped:
-      return "capped";
-    case LinkProbability::poisson:
-      return "poisson";
-    case LinkProbability::odds:
-      return "odds";
-  }
-  return "?";
+  return k_link_names[static_cast<std::size_t>(kind)];
 }
 
 double power_law_mean(const PowerLaw& law) {

@@ -68,12 +68,17 @@ struct Fixture {
   RotorState initial() const {
     return initial_state(distributed.first_row(), distributed.local_size(), {{6.0, 1.0, 5}});
   }
+  /// The force at the phases of `s`, ready for a first step.
+  ForceEvaluation force_at(const RotorState& s) {
+    ForceEvaluation f(force);
+    f.update(s);
+    return f;
+  }
 };
 
 RotorState run(const Integrator& method, Fixture& fx, double h, double T, double K) {
   RotorState s = fx.initial();
-  ForceEvaluation f(fx.force);
-  f.update(s);
+  ForceEvaluation f = fx.force_at(s);
   for (long k = 0; k < std::lround(T / h); ++k) method.step(s, h, {K}, f);
   return s;
 }
@@ -118,8 +123,7 @@ struct EnergyHalves {
 
 EnergyHalves energy_halves(const Integrator& method, Fixture& fx, double h, double T, double K) {
   RotorState s = fx.initial();
-  ForceEvaluation f(fx.force);
-  f.update(s);
+  ForceEvaluation f = fx.force_at(s);
   const double n = fx.net.size();
   const double e0 = energy(s, f, K, n);
   const long steps = std::lround(T / h);
@@ -168,8 +172,7 @@ TEST_CASE(
   for (const auto& name : k_all_names) {
     const auto method = make_integrator(name);
     RotorState s = fx.initial();
-    ForceEvaluation f(fx.force);
-    f.update(s);
+    ForceEvaluation f = fx.force_at(s);
     for (int k = 0; k < 10; ++k) method->step(s, 0.01, {k_strong}, f);
     std::vector<double> g;
     ForceSums sums;
@@ -259,8 +262,7 @@ TEST_CASE(
   for (const std::string name : {"yoshida4", "blanes_moan"}) {
     const auto method = make_integrator(name);
     RotorState s = s0;
-    ForceEvaluation f(fx.force);
-    f.update(s);
+    ForceEvaluation f = fx.force_at(s);
     for (int k = 0; k < 250; ++k) method->step(s, 0.02, {k_strong}, f);
     for (double& p : s.p) p = -p;  // the cached force depends on the phases only
     for (int k = 0; k < 250; ++k) method->step(s, 0.02, {k_strong}, f);
@@ -280,8 +282,7 @@ TEST_CASE("Every integrator conserves total momentum to round-off [ER N=400 K=8K
   for (const auto& name : k_all_names) {
     const auto method = make_integrator(name);
     RotorState s = fx.initial();
-    ForceEvaluation f(fx.force);
-    f.update(s);
+    ForceEvaluation f = fx.force_at(s);
     double scale = 0.0;
     double p0 = 0.0;
     for (const double p : s.p) {

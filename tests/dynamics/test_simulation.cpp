@@ -350,44 +350,53 @@ TEST_CASE("A per-K step list is range-checked naming the entry", "[simulation]")
 
 // Bugs found by the review of issue #19, each reproduced before its fix.
 
+namespace {
+
+// ER N = 200 (seed 6) with its distributed form and sparse force, and the short schedule.
+struct ErRun {
+  explicit ErRun(double q) : net(erdos_renyi({200, q, 6})), d(net), force(d) {}
+  SimulationResult run() { return simulate(d, net.degrees(), force, p); }
+  Network net;
+  DistributedNetwork d;
+  NetworkForce force;
+  SimulationParameters p = short_run();
+};
+
+}  // namespace
+
 TEST_CASE("A run stopped by stop_after_steps reports its wall time and force evaluations",
           "[simulation][bug]") {
   // Before the fix the stop returned without finish: integration_seconds stayed 0 and the
   // evaluation count missed this session's evaluations.
-  const Network net = erdos_renyi({200, 0.05, 6});
-  const DistributedNetwork d(net);
-  NetworkForce force(d);
-  SimulationParameters p = short_run();
-  p.stop_after_steps = 25;
-  const SimulationResult r = simulate(d, net.degrees(), force, p);
+  ErRun e(0.05);
+  e.p.stop_after_steps = 25;
+  const SimulationResult r = e.run();
   REQUIRE(r.interrupted);
   REQUIRE(r.steps == 25);
   // Leap-frog: the initial force, then one evaluation per step.
   REQUIRE(r.force_evaluations == 26);
   REQUIRE(r.integration_seconds > 0.0);
-  REQUIRE(r.force_name == force.name());
+  REQUIRE(r.force_name == e.force.name());
 }
 
 TEST_CASE("The blow-up message names the running method and its own stability bound [yoshida4]",
           "[simulation][bug]") {
   // Before the fix the message quoted leap-frog's bound h omega < 2 whatever ran.
-  const Network net = erdos_renyi({200, 0.1, 6});
-  const DistributedNetwork d(net);
-  NetworkForce force(d);
-  SimulationParameters p = short_run();
-  p.integrator = "yoshida4";
-  p.h = 0.5;
-  p.duration = 100.0;
-  p.transient = 10.0;
-  p.K = {4000.0};
+  ErRun e(0.1);
+  e.p.integrator = "yoshida4";
+  e.p.h = 0.5;
+  e.p.duration = 100.0;
+  e.p.transient = 10.0;
+  e.p.K = {4000.0};
   try {
-    simulate(d, net.degrees(), force, p);
+    e.run();
     FAIL("no SimulationBlowUp");
-  } catch (const SimulationBlowUp& e) {
-    INFO(e.what());
+  } catch (const SimulationBlowUp& blow_up) {
+    const char* message = blow_up.what();
+    INFO(message);
     const std::string limit = std::to_string(yoshida4().stability_limit()).substr(0, 5);
-    REQUIRE_THAT(e.what(), Catch::Contains("yoshida4 is stable for h * omega_max < " + limit));
-    REQUIRE_THAT(e.what(), !Catch::Contains("leap-frog") && !Catch::Contains("leapfrog"));
+    REQUIRE_THAT(message, Catch::Contains("yoshida4 is stable for h * omega_max < " + limit));
+    REQUIRE_THAT(message, !Catch::Contains("leap-frog") && !Catch::Contains("leapfrog"));
   }
 }
 
@@ -396,34 +405,28 @@ TEST_CASE("The guard stops on the same energy error the run records [ER N=200]",
   // The error used to be computed twice per record (once for the record, once in the guard);
   // now one value serves both, so a tolerance equal to the recorded maximum passes and the next
   // double below it stops the run.
-  const Network net = erdos_renyi({200, 0.1, 6});
-  const DistributedNetwork d(net);
-  NetworkForce force(d);
-  SimulationParameters p = short_run();
-  p.h = 0.05;
+  ErRun e(0.1);
+  e.p.h = 0.05;
   double worst = 0.0;
-  for (const auto& point : simulate(d, net.degrees(), force, p).points) {
-    for (const double e : point.energy_rel_error_max) worst = std::max(worst, e);
+  for (const auto& point : e.run().points) {
+    for (const double err : point.energy_rel_error_max) worst = std::max(worst, err);
   }
   REQUIRE(worst > 0.0);
-  p.energy_tolerance = worst;
-  REQUIRE_NOTHROW(simulate(d, net.degrees(), force, p));
-  p.energy_tolerance = std::nextafter(worst, 0.0);
-  REQUIRE_THROWS_AS(simulate(d, net.degrees(), force, p), SimulationBlowUp);
+  e.p.energy_tolerance = worst;
+  REQUIRE_NOTHROW(e.run());
+  e.p.energy_tolerance = std::nextafter(worst, 0.0);
+  REQUIRE_THROWS_AS(e.run(), SimulationBlowUp);
 }
 
 TEST_CASE("The results file records each K's integrator and step [per-K steps]",
           "[simulation][bug]") {
   // Before the fix the file's integrator and h attributes were those of SimulationParameters,
   // whatever the per-K steps ran.
-  const Network net = erdos_renyi({200, 0.05, 6});
-  const DistributedNetwork d(net);
-  NetworkForce force(d);
-  SimulationParameters p = short_run();
-  p.steps = {{"leapfrog", 0.02}, {"yoshida4", 0.05}, {"blanes_moan", 0.1}};
-  const SimulationResult r = simulate(d, net.degrees(), force, p);
+  ErRun e(0.05);
+  e.p.steps = {{"leapfrog", 0.02}, {"yoshida4", 0.05}, {"blanes_moan", 0.1}};
+  const SimulationResult r = e.run();
   const std::string path = temp_path("hmfnet_test_per_k_steps");
-  if (ParallelSession::rank() == 0) write_run_file(path, r, p, {});
+  if (ParallelSession::rank() == 0) write_run_file(path, r, e.p, {});
   ParallelSession::max(0.0);
   {
     const Hdf5File f(path, Hdf5File::Mode::read);
@@ -434,7 +437,7 @@ TEST_CASE("The results file records each K's integrator and step [per-K steps]",
     REQUIRE_THAT(f.string_attribute(f.id(), "integrator"), Catch::Contains("per K"));
     REQUIRE(std::isnan(f.double_attribute(f.id(), "h")));
     const auto parameters = nlohmann::json::parse(f.string_attribute(f.id(), "parameters"));
-    REQUIRE(parameters == to_json(p));
+    REQUIRE(parameters == to_json(e.p));
   }
   ParallelSession::max(0.0);
   if (ParallelSession::rank() == 0) std::filesystem::remove(path);
