@@ -15,6 +15,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libbenchmark-dev
   python3 python3-numpy python3-h5py python3-matplotlib
   clang libclang-rt-dev libomp-dev  # ci/fuzz.sh: libFuzzer and sanitizer runtimes, OpenMP for clang
+  clang-format clang-tidy  # ci/format.sh, ci/tidy.sh
 )
 
 missing=()

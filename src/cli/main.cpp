@@ -1,5 +1,6 @@
 // hmfnet: command-line entry point. `hmfnet --help` lists the subcommands.
 #include <CLI/CLI.hpp>
+#include <exception>
 #include <iostream>
 
 #include "cli/command_options.hpp"
@@ -60,7 +61,14 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  hmfnet::cli::set_command_line(argc, argv);
-  hmfnet::ParallelSession session(&argc, &argv);
-  return run(argc, argv);
+  // run() reports the command's own errors; this catches what escapes before it (MPI start-up,
+  // allocation), which would otherwise end the process in std::terminate with no message.
+  try {
+    hmfnet::cli::set_command_line(argc, argv);
+    hmfnet::ParallelSession session(&argc, &argv);
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << "hmfnet: error: " << e.what() << '\n';
+    return 1;
+  }
 }

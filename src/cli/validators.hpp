@@ -5,6 +5,7 @@
 #include <cmath>
 #include <functional>
 #include <string>
+#include <utility>
 
 namespace hmfnet::cli {
 
@@ -14,7 +15,7 @@ namespace hmfnet::cli {
 inline CLI::Validator number_check(std::function<bool(double)> ok, const std::string& allowed,
                                    const std::string& name) {
   return CLI::Validator(
-      [ok, allowed](std::string& text) -> std::string {
+      [ok = std::move(ok), allowed](std::string& text) -> std::string {
         try {
           std::size_t used = 0;
           const double v = std::stod(text, &used);

@@ -60,6 +60,9 @@ void rows_kernel(const RowKernelArgs<T>& a, NodeIndex rows, int runtime_b) {
       const double yc = (acc[0][2 * b] + acc[1][2 * b]) + (acc[2][2 * b] + acc[3][2 * b]);
       const double ys = static_cast<double>((acc[0][2 * b + 1] + acc[1][2 * b + 1]) +
                                             (acc[2][2 * b + 1] + acc[3][2 * b + 1]));
+      // 2 * b < 2 * kMax cannot overflow int. Casting it to ptrdiff_t (the check's fix) changes
+      // GCC's instruction order in this loop, so the implicit widening stays.
+      // NOLINTNEXTLINE(bugprone-implicit-widening-of-multiplication-result)
       const double c = o[2 * b], s = o[2 * b + 1];
       a.g[base + b] = a.inverse_n * (c * ys - s * yc);
       a.y[2 * (base + b)] = yc;

@@ -169,7 +169,7 @@ namespace {
 // The step of the whole run when every K shares it; with per-K steps (SimulationParameters::steps)
 // the top-level attributes say so and /points/integrator, /points/h hold each K's.
 StepChoice common_step(const SimulationParameters& params) {
-  const StepChoice first = step_at(params, 0);
+  StepChoice first = step_at(params, 0);  // not const: the return moves it
   for (std::size_t k = 1; k < params.K.size(); ++k) {
     if (!(step_at(params, k) == first)) return {"per K: see /points/integrator", std::nan("")};
   }

@@ -44,21 +44,23 @@ Header parse_header(TextScanner& in) {
   }
   Header h;
   const std::string field = lower(t[3]);
-  if (field == "pattern")
+  if (field == "pattern") {
     h.field = Field::pattern;
-  else if (field == "integer")
+  } else if (field == "integer") {
     h.field = Field::integer;
-  else if (field == "real")
+  } else if (field == "real") {
     h.field = Field::real;
-  else
+  } else {
     in.fail("field '" + std::string(t[3]) + "' is not supported (pattern, integer, real)");
+  }
   const std::string sym = lower(t[4]);
-  if (sym == "symmetric")
+  if (sym == "symmetric") {
     h.symmetry = EntrySymmetry::symmetric;
-  else if (sym == "general")
+  } else if (sym == "general") {
     h.symmetry = EntrySymmetry::general;
-  else
+  } else {
     in.fail("symmetry '" + std::string(t[4]) + "' is not supported (symmetric, general)");
+  }
   return h;
 }
 

@@ -30,9 +30,10 @@ struct EdgeSet {
 EdgeSet edge_set(const Network& net) {
   EdgeSet s;
   s.edges.reserve(static_cast<std::size_t>(net.edges()));
-  for (NodeIndex i = 0; i < net.size(); ++i)
+  for (NodeIndex i = 0; i < net.size(); ++i) {
     for (const RowEntry entry : net.row(i))
       if (entry.col > i) s.edges.emplace_back(i, entry.col);
+  }
   s.present.reserve(2 * s.edges.size());
   for (const auto& [u, v] : s.edges) s.present.insert(key(u, v));
   return s;

@@ -86,8 +86,7 @@ LargeKLimit solve_large_k_limit(const Network& network, const SelfConsistentOpti
   std::vector<double> r(d.size());
   for (std::size_t i = 0; i < d.size(); ++i) r[i] = B * d[i];
   const SelfConsistentMap map(network, 0.0);
-  const MapFixedPoint fp =
-      iterate_self_consistent_map(map, std::move(r), B * B * n * mean, options);
+  const MapFixedPoint fp = iterate_self_consistent_map(map, r, B * B * n * mean, options);
   LargeKLimit out;
   out.r_hat = fp.r;
   out.eta_hat = fp.eta;

@@ -260,7 +260,7 @@ void SelfConsistentSystem::attempt(SelfConsistentSolution& out,
     if (mu_warm > 0.0) mu = mu_warm;  // else (mu0 < 0 far from the previous K) the cold guess
   }
   const SelfConsistentMap map(m_network, mu0 / K);
-  const MapFixedPoint fp = iterate_self_consistent_map(map, std::move(r), mu / K, options);
+  const MapFixedPoint fp = iterate_self_consistent_map(map, r, mu / K, options);
   out.r = fp.r;
   out.sigma2 = fp.eta * K;
   out.R = global_order_parameter(fp.r, m_mean_degree);

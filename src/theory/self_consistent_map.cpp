@@ -122,8 +122,9 @@ class LogVariables {
 
 }  // namespace
 
-MapFixedPoint iterate_self_consistent_map(const SelfConsistentMap& map, std::vector<double> r,
-                                          double eta, const SelfConsistentOptions& options) {
+MapFixedPoint iterate_self_consistent_map(const SelfConsistentMap& map,
+                                          const std::vector<double>& r, double eta,
+                                          const SelfConsistentOptions& options) {
   const auto n = static_cast<std::size_t>(map.size());
   if (r.size() != n) {
     throw ParameterError("self-consistent map: guess", std::to_string(r.size()) + " entries",

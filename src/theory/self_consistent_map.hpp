@@ -64,8 +64,9 @@ struct MapFixedPoint {
 /// acceleration in the variables log r_n, log eta (see the .cpp: this keeps the iteration away
 /// from the incoherent root r = 0 and positive). Nodes without neighbours keep r_n = 0. The
 /// residual is that of the last map application, from the returned point.
-MapFixedPoint iterate_self_consistent_map(const SelfConsistentMap& map, std::vector<double> r,
-                                          double eta, const SelfConsistentOptions& options);
+MapFixedPoint iterate_self_consistent_map(const SelfConsistentMap& map,
+                                          const std::vector<double>& r, double eta,
+                                          const SelfConsistentOptions& options);
 
 /// eq:globalOrderParam: R = sum_n r_n / ||d||.
 double global_order_parameter(const std::vector<double>& r, double mean_degree);
