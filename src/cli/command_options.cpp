@@ -152,8 +152,10 @@ void add_simulate_options(CLI::App& app, SimulateFlags& f, const Run& run) {
   c->add_option("--seed", f.seed, "Random seed of the initial state")->required()->check(k_seed);
   c->add_option("--replicas", f.replicas, "Independent replicas (seeds seed..seed+B-1)")
       ->check(CLI::Range(1, 64));
-  c->add_option("--threads", f.threads,
-                "OpenMP threads per rank (default: all cores, shared by the ranks)")
+  c->add_option(
+       "--threads", f.threads,
+       "OpenMP threads per rank (default: as the work per step pays for, at most the cores "
+       "shared by the ranks)")
       ->check(CLI::Range(1, 1024));
   c->add_option("-o,--output", f.output, "Results file (HDF5)");
   c->add_option("--checkpoint", f.checkpoint, "Checkpoint file, written every few seconds");

@@ -100,6 +100,12 @@ SimulationParameters parameters(const SimulateFlags& f, double Kc) {
   p.checkpoint_path = f.checkpoint;
   p.resume = f.resume;
   p.progress = !f.quiet && !f.json && ::isatty(2);
+  // An explicit count (--threads, or OMP_NUM_THREADS) is the user's; otherwise the work decides.
+  if (f.threads > 0) {
+    p.threads = f.threads;
+  } else if (std::getenv("OMP_NUM_THREADS") != nullptr) {
+    p.threads = omp_get_max_threads();
+  }
   return p;
 }
 
@@ -127,7 +133,8 @@ void run(const SimulateFlags& f) {
   if (f.threads > 0) {
     omp_set_num_threads(f.threads);
   } else if (ParallelSession::ranks() > 1 && std::getenv("OMP_NUM_THREADS") == nullptr) {
-    // Default "all cores" shared by the ranks (assumed on one machine; set --threads otherwise).
+    // At most "all cores" shared by the ranks (assumed on one machine; set --threads otherwise);
+    // the run takes fewer when its work per step is small (thread_choice.hpp).
     omp_set_num_threads(std::max(1, omp_get_num_procs() / ParallelSession::ranks()));
   }
   if (!f.output.empty()) require_writable_destination(f.output);
@@ -174,6 +181,7 @@ void run(const SimulateFlags& f) {
       static_cast<double>(result.nnz_per_evaluation) * static_cast<double>(result.steps) *
       static_cast<double>(params.replicas.size()) / result.integration_seconds;
   out["resumed"] = result.resumed;
+  out["threads"] = result.threads;
   for (const auto& p : result.points) out["points"].push_back(point_json(p, Kc));
   if (!f.output.empty()) {
     RunMetadata meta;
@@ -188,7 +196,7 @@ void run(const SimulateFlags& f) {
     nlohmann::json prov =
         nlohmann::json::parse(provenance("simulate", run_parameters(params, meta.inputs_json)));
     prov["ranks"] = ParallelSession::ranks();
-    prov["threads"] = omp_get_max_threads();
+    prov["threads"] = result.threads;
     prov["wall_seconds"] =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
     meta.provenance_json = prov.dump();

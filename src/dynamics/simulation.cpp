@@ -1,5 +1,6 @@
 #include "dynamics/simulation.hpp"
 
+#include <omp.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -14,6 +15,7 @@
 #include "dynamics/node_statistics.hpp"
 #include "dynamics/ordered_sum.hpp"
 #include "dynamics/segment_state.hpp"
+#include "dynamics/thread_choice.hpp"
 #include "dynamics/time_average.hpp"
 #include "parallel/parallel_session.hpp"
 
@@ -454,8 +456,14 @@ SimulationResult simulate(const DistributedNetwork& network, const std::vector<d
     throw ParameterError("rotor node", std::to_string(params.rotor_node),
                          "0 <= node < N = " + std::to_string(network.global_size()));
   }
+  const auto work = static_cast<std::int64_t>(force.work_per_evaluation()) *
+                    static_cast<std::int64_t>(params.replicas.size());
+  const ThreadCountScope threads(params.threads > 0 ? params.threads
+                                                    : default_threads(work, omp_get_max_threads()));
   Run run(network, degrees, force, params);
-  return run.execute();
+  SimulationResult result = run.execute();
+  result.threads = omp_get_max_threads();
+  return result;
 }
 
 }  // namespace hmfnet

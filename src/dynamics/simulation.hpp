@@ -54,6 +54,7 @@ struct SimulationResult {
   std::int64_t force_evaluations = 0;
   double integration_seconds = 0.0;   ///< the stepping loop only (no set-up, no I/O)
   EdgeOffset nnz_per_evaluation = 0;  ///< summed over ranks
+  int threads = 1;                    ///< OpenMP threads per rank the stepping used
   std::string force_name;
   bool resumed = false;
   bool interrupted = false;  ///< stopped by stop_after_steps or a signal: points incomplete

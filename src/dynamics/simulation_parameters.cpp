@@ -67,6 +67,8 @@ void validate(const SimulationParameters& p) {
     throw ParameterError("record stride", std::to_string(p.record_stride), ">= 1");
   if (p.phase_bins < 1) throw ParameterError("phase bins", std::to_string(p.phase_bins), ">= 1");
   if (p.rotor_node < 0) throw ParameterError("rotor node", std::to_string(p.rotor_node), ">= 0");
+  if (p.threads < 0)
+    throw ParameterError("threads", std::to_string(p.threads), ">= 0 (0: default)");
   if (!positive(p.energy_tolerance)) {
     throw ParameterError("energy tolerance", std::to_string(p.energy_tolerance), "> 0");
   }

@@ -43,6 +43,9 @@ struct SimulationParameters {
   /// Stop after this many steps in this session, as an interruption would (0: never). For
   /// fault-injection tests of checkpoint/resume.
   std::int64_t stop_after_steps = 0;
+  /// OpenMP threads per rank: 0 lets the work per step choose (default_threads,
+  /// thread_choice.hpp) among the threads OpenMP offers. Results are bit-identical for any count.
+  int threads = 0;
 };
 
 /// Throws ParameterError naming the first parameter out of range.

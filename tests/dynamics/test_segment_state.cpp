@@ -43,32 +43,32 @@ constexpr std::size_t member_count() {
   }
 }
 
-// Counts the fields a list visits, whatever their kind.
+// Counts the fields a list visits, whatever their kind (every kind forwards to `count`).
 struct FieldCounter {
   std::size_t fields = 0;
-  template <class T>
-  void count(const std::string&, T&) {
+  template <class... Args>
+  void count(const Args&...) {
     ++fields;
   }
-  template <class T>
-  void real(const std::string&, T&) {
-    ++fields;
+  template <class... Args>
+  void real(const Args&... a) {
+    count(a...);
   }
-  template <class T>
-  void replicated(const std::string&, T&) {
-    ++fields;
+  template <class... Args>
+  void replicated(const Args&... a) {
+    count(a...);
   }
-  template <class T>
-  void rows(const std::string&, T&, int) {
-    ++fields;
+  template <class... Args>
+  void rows(const Args&... a) {
+    count(a...);
   }
-  template <class T>
-  void batch_means(const std::string&, T&) {
-    ++fields;
+  template <class... Args>
+  void batch_means(const Args&... a) {
+    count(a...);
   }
-  template <class T>
-  void node_statistics(const std::string&, T&) {
-    ++fields;
+  template <class... Args>
+  void node_statistics(const Args&... a) {
+    count(a...);
   }
 };
 

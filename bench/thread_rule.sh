@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# The default thread count against the best one (issue #16, goal 1): `hmfnet simulate` on ER
+# networks from 10^4 to 10^7 stored entries, with --threads 1, --threads 2 and the default
+# (src/dynamics/thread_choice.hpp), under OMP_WAIT_POLICY unset, ACTIVE and PASSIVE; all in one
+# run so the ratios are comparable. Prints the integration loop's rate (nnz * steps * replicas
+# per second, as the CLI reports it), the threads the default chose, and default / best.
+# Run on an idle machine. Usage: bench/thread_rule.sh [BUILD_DIR (default build)]
+set -euo pipefail
+build=${1:-build}
+hmfnet="$build/bin/hmfnet"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+rate() {  # policy, network, T, extra args... -> "rate threads"
+  local policy=$1 net=$2 T=$3
+  shift 3
+  local env=(env -u OMP_WAIT_POLICY -u OMP_NUM_THREADS)
+  [[ $policy != unset ]] && env+=(OMP_WAIT_POLICY="$policy")
+  "${env[@]}" "$hmfnet" simulate "$net" --K-over-Kc 1.5 --T "$T" --transient 0 --h 0.01 \
+    --seed 1 --record-stride 1000000 --json --quiet "$@" 2>/dev/null |
+    python3 -c "import json,sys; d=json.load(sys.stdin); print(d['nnz_steps_per_second']/1e9, d['threads'])"
+}
+
+printf "%-22s %-8s %9s %9s %9s %8s %13s\n" network policy "1 thread" "2 threads" default \
+  "chosen" "default/best"
+# N, mean degree, T: about 2e9 stored entries x steps per run.
+for spec in "1000 10 2000" "10000 10 200" "10000 100 20" "100000 20 10" "100000 100 2"; do
+  read -r n d T <<<"$spec"
+  net="$tmp/er_${n}_${d}.h5"
+  "$hmfnet" generate er --n "$n" --mean-degree "$d" --seed 1 -o "$net" 2>/dev/null
+  for policy in unset ACTIVE PASSIVE; do
+    read -r one _ < <(rate "$policy" "$net" "$T" --threads 1)
+    read -r two _ < <(rate "$policy" "$net" "$T" --threads 2)
+    read -r def chosen < <(rate "$policy" "$net" "$T")
+    python3 -c "
+one, two, d = $one, $two, $def
+print('%-22s %-8s %9.3f %9.3f %9.3f %8d %13.2f' % ('ER N=$n d=$d', '$policy', one, two, d, $chosen, d / max(one, two)))"
+  done
+done
