@@ -21,8 +21,14 @@ struct ForceSums {
 class CouplingForce {
  public:
   virtual ~CouplingForce() = default;
-  /// g (rows x replicas, row-major) at the phases of `state`, and the local sums. Collective
-  /// when the network is distributed.
+  /// Sizes g, the sums and this force's own buffers for `state`, outside a step's team
+  /// (team.hpp); throws ParameterError for a state it cannot take. evaluate() calls it itself
+  /// when it runs outside a team.
+  virtual void prepare(const RotorState& state, std::vector<double>& g, ForceSums& sums) = 0;
+  /// g (rows x replicas, row-major) at the phases of `state`, and the local sums. Called by every
+  /// thread of a step's team (after prepare) or outside one; collective when the network is
+  /// distributed. The sums are complete on the master thread on return, on the others after the
+  /// next barrier.
   virtual void evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) = 0;
   /// Stored entries of A this rank reads per evaluation (for throughput figures).
   virtual EdgeOffset work_per_evaluation() const = 0;

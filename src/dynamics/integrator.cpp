@@ -5,27 +5,42 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "dynamics/team.hpp"
 
 namespace hmfnet {
 
 void kick(RotorState& state, double c, const std::vector<double>& K, const std::vector<double>& g) {
   const auto w = static_cast<std::size_t>(state.replicas);
   const auto rows = static_cast<std::size_t>(state.rows);
-#pragma omp parallel for schedule(static)
+#pragma omp for schedule(static)
   for (std::size_t r = 0; r < rows; ++r)
     for (std::size_t b = 0; b < w; ++b) state.p[r * w + b] += c * K[b] * g[r * w + b];
 }
 
-void drift(RotorState& state, double c) {
-  const std::size_t cells = state.p.size();
-#pragma omp parallel for schedule(static)
-  for (std::size_t k = 0; k < cells; ++k) state.theta[k] += c * state.p[k];
+void kick_drift(RotorState& state, double c_kick, const std::vector<double>& K,
+                const std::vector<double>& g, double c_drift) {
+  const auto w = static_cast<std::size_t>(state.replicas);
+  const auto rows = static_cast<std::size_t>(state.rows);
+#pragma omp for schedule(static)
+  for (std::size_t r = 0; r < rows; ++r) {
+    for (std::size_t b = 0; b < w; ++b) {
+      const std::size_t k = r * w + b;
+      state.p[k] += c_kick * K[b] * g[k];
+      state.theta[k] += c_drift * state.p[k];
+    }
+  }
 }
 
-void LeapFrog::step(RotorState& state, double h, const std::vector<double>& K,
-                    ForceEvaluation& f) const {
-  kick(state, 0.5 * h, K, f.g());
-  drift(state, h);
+void Integrator::step(RotorState& state, double h, const std::vector<double>& K,
+                      ForceEvaluation& f) const {
+  f.prepare(state);
+  prepare(state);
+  in_team([&] { advance(state, h, K, f); });
+}
+
+void LeapFrog::advance(RotorState& state, double h, const std::vector<double>& K,
+                       ForceEvaluation& f) const {
+  kick_drift(state, 0.5 * h, K, f.g(), h);
   f.update(state);
   kick(state, 0.5 * h, K, f.g());
 }
@@ -93,11 +108,10 @@ double splitting_stability_limit(const std::vector<double>& kicks,
   return last;
 }
 
-void KickDriftSplitting::step(RotorState& state, double h, const std::vector<double>& K,
-                              ForceEvaluation& f) const {
+void KickDriftSplitting::advance(RotorState& state, double h, const std::vector<double>& K,
+                                 ForceEvaluation& f) const {
   for (std::size_t i = 0; i < m_drifts.size(); ++i) {
-    kick(state, m_kicks[i] * h, K, f.g());
-    drift(state, m_drifts[i] * h);
+    kick_drift(state, m_kicks[i] * h, K, f.g(), m_drifts[i] * h);
     f.update(state);
   }
   kick(state, m_kicks.back() * h, K, f.g());
@@ -133,7 +147,7 @@ void runge_kutta_stage(RotorState& stage, const RotorState& start, double c,
                        std::vector<double>& theta_rate) {
   const auto width = static_cast<std::size_t>(start.replicas);
   const auto rows = static_cast<std::size_t>(start.rows);
-#pragma omp parallel for schedule(static)
+#pragma omp for schedule(static)
   for (std::size_t r = 0; r < rows; ++r) {
     for (std::size_t b = 0; b < width; ++b) {
       const std::size_t k = r * width + b;
@@ -146,19 +160,36 @@ void runge_kutta_stage(RotorState& stage, const RotorState& start, double c,
 
 void accumulate(std::vector<double>& sum, double w, const std::vector<double>& g) {
   const std::size_t cells = sum.size();
-#pragma omp parallel for schedule(static)
+#pragma omp for schedule(static)
   for (std::size_t k = 0; k < cells; ++k) sum[k] += w * g[k];
 }
 
 }  // namespace
 
-void RungeKutta4::step(RotorState& state, double h, const std::vector<double>& K,
-                       ForceEvaluation& f) const {
+void RungeKutta4::prepare(const RotorState& state) const {
+  m_stage.replicas = state.replicas;
+  m_stage.rows = state.rows;
+  m_stage.first_row = state.first_row;
+  m_stage.theta.resize(state.theta.size());
+  m_stage.p.resize(state.p.size());
+  m_theta_rate.resize(state.p.size());
+  m_force_sum.resize(state.p.size());
+}
+
+void RungeKutta4::advance(RotorState& state, double h, const std::vector<double>& K,
+                          ForceEvaluation& f) const {
   // Butcher tableau of classical RK4 (Hairer, Norsett & Wanner I, Table II.1.2):
   // y1 = y0 + h/6 (k1 + 2 k2 + 2 k3 + k4), stages at c = 0, 1/2, 1/2, 1.
-  m_stage = state;
-  m_theta_rate = state.p;
-  m_force_sum = f.g();
+  // The scratch holds the start of the step (sized by prepare, outside the team; the loop's
+  // barrier publishes the copies).
+  const std::size_t cells = state.p.size();
+#pragma omp for schedule(static)
+  for (std::size_t k = 0; k < cells; ++k) {
+    m_stage.theta[k] = state.theta[k];
+    m_stage.p[k] = state.p[k];
+    m_theta_rate[k] = state.p[k];
+    m_force_sum[k] = f.g()[k];
+  }
   runge_kutta_stage(m_stage, state, 0.5 * h, K, f.g(), 2.0, m_theta_rate);
   f.update(m_stage);
   accumulate(m_force_sum, 2.0, f.g());
@@ -170,7 +201,7 @@ void RungeKutta4::step(RotorState& state, double h, const std::vector<double>& K
   accumulate(m_force_sum, 1.0, f.g());
   const auto width = static_cast<std::size_t>(state.replicas);
   const auto rows = static_cast<std::size_t>(state.rows);
-#pragma omp parallel for schedule(static)
+#pragma omp for schedule(static)
   for (std::size_t r = 0; r < rows; ++r) {
     for (std::size_t b = 0; b < width; ++b) {
       const std::size_t k = r * width + b;

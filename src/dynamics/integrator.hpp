@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "dynamics/coupling_force.hpp"
+#include "dynamics/team.hpp"
 
 namespace hmfnet {
 
@@ -22,8 +23,13 @@ namespace hmfnet {
 class ForceEvaluation {
  public:
   explicit ForceEvaluation(CouplingForce& force) : m_force(&force) {}
+  /// Sizes the buffers for `state`: outside a step's team, before it opens (team.hpp).
+  void prepare(const RotorState& state) { m_force->prepare(state, m_g, m_sums); }
+  /// The force at `state`, by every thread of a step's team or outside one.
   void update(const RotorState& state) {
+    if (outside_team()) prepare(state);
     m_force->evaluate(state, m_g, m_sums);
+#pragma omp master
     ++m_count;
   }
   const std::vector<double>& g() const { return m_g; }
@@ -42,9 +48,9 @@ class Integrator {
  public:
   virtual ~Integrator() = default;
   /// Advances `state` by h with coupling K[b] for replica b. On entry `f` holds the force at the
-  /// current phases; on exit at the new ones.
-  virtual void step(RotorState& state, double h, const std::vector<double>& K,
-                    ForceEvaluation& f) const = 0;
+  /// current phases; on exit at the new ones. One parallel region for the whole step
+  /// (team.hpp): the buffers are sized first, then every thread runs advance().
+  void step(RotorState& state, double h, const std::vector<double>& K, ForceEvaluation& f) const;
   /// Global order p: the state error after a fixed time is O(h^p).
   virtual int order() const = 0;
   virtual std::string name() const = 0;
@@ -53,19 +59,28 @@ class Integrator {
   /// Linear stability bound c: on a harmonic oscillator of frequency omega the step is stable
   /// for h omega < c (and the blow-up guard quotes it with omega_max = sqrt(K max_n R_n)).
   virtual double stability_limit() const = 0;
+
+ private:
+  /// Sizes this method's scratch for `state`, before the team opens (none by default).
+  virtual void prepare(const RotorState& state) const { static_cast<void>(state); }
+  /// The step, run by every thread of the step's team (or by the caller alone).
+  virtual void advance(RotorState& state, double h, const std::vector<double>& K,
+                       ForceEvaluation& f) const = 0;
 };
 
 /// Kick-drift-kick leap-frog (Stormer-Verlet): second order, symplectic, time-reversible; the
 /// paper's integrator (Sec. numericalExperiments, h = 0.01).
 class LeapFrog : public Integrator {
  public:
-  void step(RotorState& state, double h, const std::vector<double>& K,
-            ForceEvaluation& f) const override;
   int order() const override { return 2; }
   std::string name() const override { return "leapfrog"; }
   int evaluations_per_step() const override { return 1; }
   /// |trace| of the one-step map [[1 - x^2/2, x], [-x (1 - x^2/4), 1 - x^2/2]] < 2 for x < 2.
   double stability_limit() const override { return 2.0; }
+
+ private:
+  void advance(RotorState& state, double h, const std::vector<double>& K,
+               ForceEvaluation& f) const override;
 };
 
 /// A kick-drift-...-kick splitting
@@ -82,8 +97,6 @@ class KickDriftSplitting : public Integrator {
   /// Throws ParameterError otherwise.
   KickDriftSplitting(std::string name, int order, std::vector<double> kicks,
                      std::vector<double> drifts);
-  void step(RotorState& state, double h, const std::vector<double>& K,
-            ForceEvaluation& f) const override;
   int order() const override { return m_order; }
   std::string name() const override { return m_name; }
   int evaluations_per_step() const override { return static_cast<int>(m_drifts.size()); }
@@ -92,6 +105,8 @@ class KickDriftSplitting : public Integrator {
   double stability_limit() const override { return m_stability_limit; }
 
  private:
+  void advance(RotorState& state, double h, const std::vector<double>& K,
+               ForceEvaluation& f) const override;
   std::string m_name;
   int m_order;
   std::vector<double> m_kicks;
@@ -126,8 +141,6 @@ KickDriftSplitting blanes_moan4();
 /// step two states concurrently.
 class RungeKutta4 : public Integrator {
  public:
-  void step(RotorState& state, double h, const std::vector<double>& K,
-            ForceEvaluation& f) const override;
   int order() const override { return 4; }
   std::string name() const override { return "rk4"; }
   int evaluations_per_step() const override { return 4; }
@@ -135,6 +148,9 @@ class RungeKutta4 : public Integrator {
   double stability_limit() const override { return 2.0 * std::sqrt(2.0); }
 
  private:
+  void advance(RotorState& state, double h, const std::vector<double>& K,
+               ForceEvaluation& f) const override;
+  void prepare(const RotorState& state) const override;
   mutable RotorState m_stage;
   mutable std::vector<double> m_theta_rate;  // p1 + 2 p2 + 2 p3 + p4
   mutable std::vector<double> m_force_sum;   // g1 + 2 g2 + 2 g3 + g4
@@ -146,9 +162,12 @@ std::string integrator_names();
 /// known integrators otherwise.
 std::unique_ptr<Integrator> make_integrator(const std::string& name);
 
+// The loops of a step, shared out over the step's team (team.hpp) or run by the caller alone.
 /// p += c K g (the kick), over all rows and replicas.
 void kick(RotorState& state, double c, const std::vector<double>& K, const std::vector<double>& g);
-/// theta += c p (the drift).
-void drift(RotorState& state, double c);
+/// A kick by c_kick (p += c_kick K g) then a drift by c_drift (theta += c_drift p), fused per
+/// rotor: one pass and one barrier instead of two.
+void kick_drift(RotorState& state, double c_kick, const std::vector<double>& K,
+                const std::vector<double>& g, double c_drift);
 
 }  // namespace hmfnet

@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "dynamics/ordered_sum.hpp"
+#include "dynamics/team.hpp"
 
 namespace hmfnet {
 
@@ -23,54 +24,77 @@ struct RowKernelArgs {
   double inverse_n;
   double* g;
   double* y;
-  double* abs_y;
-  double* coupling;
+  double* terms;  // rows x replicas x [|y_n|, Re(e^{-i theta_n} y_n)]
 };
 
 // Replica count B fixed at compile time so the inner loops unroll and vectorise; `runtime_b`
-// serves other counts. Weighted is a template flag so the 0/1 loop reads no values. Each replica
-// is summed exactly as rows_kernel_single sums one (four accumulators by k mod 4, combined as
-// (a0 + a1) + (a2 + a3)), so B replicas in one pass equal B separate runs bit for bit.
-template <typename T, int B, bool Weighted>
+// serves other counts. Weighted is a template flag so the 0/1 loop reads no values.
+// Each replica is summed exactly as rows_kernel_single sums one, so B replicas in one pass equal
+// B separate runs bit for bit: four partial sums, partial j over the entries begin + j,
+// begin + j + 4, ... of the row's first 4 floor(d / 4), the last d mod 4 added to partial 0,
+// combined as (s0 + s1) + (s2 + s3). The partials are independent sums, so they may be formed
+// one after another: the row is walked 4 / C times, C partials at a time, so that the live
+// accumulators (C x 2B values of T) fit in the 16 vector registers of x86-64 instead of spilling
+// to the stack at every neighbour. Replicas then add 2B independent chains per neighbour, and one
+// gathered neighbour brings all their [cos, sin] in 2B adjacent values (one or two cache lines).
+template <typename T, int B, std::size_t C, bool Weighted>
 void rows_kernel(const RowKernelArgs<T>& a, NodeIndex rows, int runtime_b) {
+  static_assert(C == 1 || C == 2 || C == 4, "the partials per pass divide 4");
   const int nb = B > 0 ? B : runtime_b;
   constexpr int kMax = 64;
-#pragma omp parallel for schedule(static)
+  constexpr std::size_t kWidth = 2 * static_cast<std::size_t>(B > 0 ? B : kMax);
+  constexpr int kPasses = 4 / static_cast<int>(C);
+#pragma omp for schedule(static)
   for (NodeIndex r = 0; r < rows; ++r) {
-    T acc[4][2 * kMax];
-    for (int j = 0; j < 4; ++j)
-      for (int b = 0; b < 2 * nb; ++b) acc[j][b] = T(0);
-    const EdgeOffset end = a.row_ptr[r + 1];
-    EdgeOffset k = a.row_ptr[r];
-    for (; k + 4 <= end; k += 4) {
-      for (int j = 0; j < 4; ++j) {
-        const T* q = a.column_cs + 2 * static_cast<std::ptrdiff_t>(a.cols[k + j]) * nb;
-        const T w = Weighted ? a.weights[k + j] : T(1);
-        for (int b = 0; b < 2 * nb; ++b) acc[j][b] += w * q[b];
+    const EdgeOffset begin = a.row_ptr[r], end = a.row_ptr[r + 1];
+    const EdgeOffset full = begin + (end - begin) / 4 * 4;
+    T partial[4][kWidth];
+    for (int step = 0; step < kPasses; ++step) {
+      const int pass = step * static_cast<int>(C);
+      T acc[C][kWidth];
+      for (std::size_t c = 0; c < C; ++c)
+        for (int b = 0; b < 2 * nb; ++b) acc[c][b] = T(0);
+      for (EdgeOffset k = begin; k < full; k += 4) {
+        for (std::size_t c = 0; c < C; ++c) {
+          const EdgeOffset e = k + pass + static_cast<EdgeOffset>(c);
+          const T* q = a.column_cs + 2 * static_cast<std::ptrdiff_t>(a.cols[e]) * nb;
+          const T w = Weighted ? a.weights[e] : T(1);
+          for (int b = 0; b < 2 * nb; ++b) acc[c][b] += w * q[b];
+        }
       }
-    }
-    for (; k < end; ++k) {
-      const T* q = a.column_cs + 2 * static_cast<std::ptrdiff_t>(a.cols[k]) * nb;
-      const T w = Weighted ? a.weights[k] : T(1);
-      for (int b = 0; b < 2 * nb; ++b) acc[0][b] += w * q[b];
+      if (pass == 0) {
+        for (EdgeOffset k = full; k < end; ++k) {
+          const T* q = a.column_cs + 2 * static_cast<std::ptrdiff_t>(a.cols[k]) * nb;
+          const T w = Weighted ? a.weights[k] : T(1);
+          for (int b = 0; b < 2 * nb; ++b) acc[0][b] += w * q[b];
+        }
+      }
+      for (std::size_t c = 0; c < C; ++c)
+        for (int b = 0; b < 2 * nb; ++b) partial[static_cast<std::size_t>(pass) + c][b] = acc[c][b];
     }
     const double* o = a.owned_cs + 2 * static_cast<std::ptrdiff_t>(r) * nb;
     const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(r) * nb;
     for (int b = 0; b < nb; ++b) {
-      const double yc = (acc[0][2 * b] + acc[1][2 * b]) + (acc[2][2 * b] + acc[3][2 * b]);
-      const double ys = static_cast<double>((acc[0][2 * b + 1] + acc[1][2 * b + 1]) +
-                                            (acc[2][2 * b + 1] + acc[3][2 * b + 1]));
-      // 2 * b < 2 * kMax cannot overflow int. Casting it to ptrdiff_t (the check's fix) changes
-      // GCC's instruction order in this loop, so the implicit widening stays.
-      // NOLINTNEXTLINE(bugprone-implicit-widening-of-multiplication-result)
-      const double c = o[2 * b], s = o[2 * b + 1];
+      const std::size_t re = 2 * static_cast<std::size_t>(b), im = re + 1;
+      const T(&p)[4][kWidth] = partial;
+      const double yc = (p[0][re] + p[1][re]) + (p[2][re] + p[3][re]);
+      const double ys = static_cast<double>((p[0][im] + p[1][im]) + (p[2][im] + p[3][im]));
+      const double c = o[re], s = o[im];
       a.g[base + b] = a.inverse_n * (c * ys - s * yc);
       a.y[2 * (base + b)] = yc;
       a.y[2 * (base + b) + 1] = ys;
-      a.abs_y[base + b] = std::sqrt(yc * yc + ys * ys);
-      a.coupling[base + b] = c * yc + s * ys;
+      a.terms[2 * (base + b)] = std::sqrt(yc * yc + ys * ys);
+      a.terms[2 * (base + b) + 1] = c * yc + s * ys;
     }
   }
+}
+
+// The partials formed per pass of rows_kernel: as many as keep C x 2B values of T within
+// 128 bytes (8 SSE registers, leaving the rest for loads and addresses).
+template <typename T, int B>
+constexpr std::size_t partials_per_pass() {
+  constexpr int bytes = 2 * B * static_cast<int>(sizeof(T));
+  return bytes <= 32 ? 4 : bytes <= 64 ? 2 : 1;
 }
 
 // One replica: four independent [cos, sin] accumulators per row break the floating-point add
@@ -78,7 +102,7 @@ void rows_kernel(const RowKernelArgs<T>& a, NodeIndex rows, int runtime_b) {
 // fixed by the CSR row, so results remain identical for any thread or rank count.
 template <typename T, bool Weighted>
 void rows_kernel_single(const RowKernelArgs<T>& a, NodeIndex rows) {
-#pragma omp parallel for schedule(static)
+#pragma omp for schedule(static)
   for (NodeIndex r = 0; r < rows; ++r) {
     T c0 = 0, s0 = 0, c1 = 0, s1 = 0, c2 = 0, s2 = 0, c3 = 0, s3 = 0;
     EdgeOffset k = a.row_ptr[r];
@@ -107,8 +131,8 @@ void rows_kernel_single(const RowKernelArgs<T>& a, NodeIndex rows) {
     a.g[r] = a.inverse_n * (c * ys - s * yc);
     a.y[2 * r] = yc;
     a.y[2 * r + 1] = ys;
-    a.abs_y[r] = std::sqrt(yc * yc + ys * ys);
-    a.coupling[r] = c * yc + s * ys;
+    a.terms[2 * r] = std::sqrt(yc * yc + ys * ys);
+    a.terms[2 * r + 1] = c * yc + s * ys;
   }
 }
 
@@ -119,16 +143,16 @@ void dispatch(const RowKernelArgs<T>& a, NodeIndex rows, int b) {
       rows_kernel_single<T, Weighted>(a, rows);
       break;
     case 2:
-      rows_kernel<T, 2, Weighted>(a, rows, b);
+      rows_kernel<T, 2, partials_per_pass<T, 2>(), Weighted>(a, rows, b);
       break;
     case 4:
-      rows_kernel<T, 4, Weighted>(a, rows, b);
+      rows_kernel<T, 4, partials_per_pass<T, 4>(), Weighted>(a, rows, b);
       break;
     case 8:
-      rows_kernel<T, 8, Weighted>(a, rows, b);
+      rows_kernel<T, 8, partials_per_pass<T, 8>(), Weighted>(a, rows, b);
       break;
-    default:
-      rows_kernel<T, 0, Weighted>(a, rows, b);
+    default:  // accumulators on the stack whatever C: walk the row once
+      rows_kernel<T, 0, 4, Weighted>(a, rows, b);
       break;
   }
 }
@@ -142,10 +166,10 @@ void run_kernel(const RowKernelArgs<T>& a, NodeIndex rows, int b) {
   }
 }
 
+// to = from in float32; `to` sized by the caller (team.hpp: no allocation inside a team).
 void narrow(const std::vector<double>& from, std::vector<float>& to) {
-  to.resize(from.size());
   const std::size_t n = from.size();
-#pragma omp parallel for schedule(static)
+#pragma omp for schedule(static)
   for (std::size_t k = 0; k < n; ++k) to[k] = static_cast<float>(from[k]);
 }
 
@@ -157,7 +181,11 @@ NetworkForce::NetworkForce(const DistributedNetwork& network, ForcePrecision pre
       m_inverse_n(1.0 / static_cast<double>(network.global_size())),
       m_identity_import(network.columns_are_owned_rows()),
       m_precision(precision) {
-  if (m_precision == ForcePrecision::float32) narrow(m_adjacency.weights, m_weights_f32);
+  if (m_precision == ForcePrecision::float32) {
+    m_weights_f32.resize(m_adjacency.weights.size());
+#pragma omp parallel
+    narrow(m_adjacency.weights, m_weights_f32);
+  }
 }
 
 template <typename T>
@@ -171,31 +199,42 @@ void NetworkForce::run_rows(const T* weights, const T* column_cs, NodeIndex rows
                               m_inverse_n,
                               g.data(),
                               m_y.data(),
-                              m_abs_y.data(),
-                              m_coupling.data()};
+                              m_terms.data()};
   run_kernel(args, rows, replicas);
 }
 
-void NetworkForce::evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) {
+void NetworkForce::prepare(const RotorState& state, std::vector<double>& g, ForceSums& sums) {
   const int nb = state.replicas;
+  if (nb > 64) throw ParameterError("replicas per pass", std::to_string(nb), "1 to 64");
   const std::size_t cells = static_cast<std::size_t>(state.rows) * static_cast<std::size_t>(nb);
   m_owned_cs.resize(2 * cells);
-#pragma omp parallel for schedule(static)
+  const std::size_t columns =
+      2 * static_cast<std::size_t>(m_adjacency.columns) * static_cast<std::size_t>(nb);
+  if (!m_identity_import) m_column_cs.resize(columns);
+  if (m_precision == ForcePrecision::float32) m_column_f32.resize(columns);
+  g.resize(cells);
+  m_y.resize(2 * cells);
+  m_terms.resize(2 * cells);
+  m_term_sums.resize(2 * static_cast<std::size_t>(nb));
+  m_sums.prepare(static_cast<std::size_t>(state.rows), 2 * nb);
+  sums.order.resize(static_cast<std::size_t>(nb));
+  sums.coupling.resize(static_cast<std::size_t>(nb));
+}
+
+void NetworkForce::evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) {
+  if (outside_team()) prepare(state, g, sums);
+  const int nb = state.replicas;
+  const std::size_t cells = static_cast<std::size_t>(state.rows) * static_cast<std::size_t>(nb);
+#pragma omp for schedule(static)
   for (std::size_t k = 0; k < cells; ++k) {
     ::sincos(state.theta[k], &m_owned_cs[2 * k + 1], &m_owned_cs[2 * k]);  // one call: both
   }
   const double* column_cs = m_owned_cs.data();
   if (!m_identity_import) {
-    m_column_cs.resize(2 * static_cast<std::size_t>(m_adjacency.columns) *
-                       static_cast<std::size_t>(nb));
-    m_network.import_columns(m_owned_cs.data(), 2 * nb, m_column_cs.data());
+    // Tpetra and MPI on one thread; the barrier after it publishes the ghost values.
+    on_master([&] { m_network.import_columns(m_owned_cs.data(), 2 * nb, m_column_cs.data()); });
     column_cs = m_column_cs.data();
   }
-  g.resize(cells);
-  m_y.resize(2 * cells);
-  m_abs_y.resize(cells);
-  m_coupling.resize(cells);
-  if (nb > 64) throw ParameterError("replicas per pass", std::to_string(nb), "1 to 64");
   if (m_precision == ForcePrecision::float64) {
     run_rows(m_adjacency.weights.empty() ? nullptr : m_adjacency.weights.data(), column_cs,
              state.rows, nb, g);
@@ -206,8 +245,14 @@ void NetworkForce::evaluate(const RotorState& state, std::vector<double>& g, For
     run_rows(m_weights_f32.empty() ? nullptr : m_weights_f32.data(), m_column_f32.data(),
              state.rows, nb, g);
   }
-  ordered_column_sums(m_abs_y, static_cast<std::size_t>(state.rows), nb, sums.order);
-  ordered_column_sums(m_coupling, static_cast<std::size_t>(state.rows), nb, sums.coupling);
+  // Both sums of every replica in one ordered pass (each column is summed on its own, so this
+  // equals two separate passes bit for bit).
+  m_sums.sum(m_terms.data(), m_term_sums.data());
+#pragma omp master
+  for (std::size_t b = 0; b < static_cast<std::size_t>(nb); ++b) {
+    sums.order[b] = m_term_sums[2 * b];
+    sums.coupling[b] = m_term_sums[2 * b + 1];
+  }
 }
 
 }  // namespace hmfnet

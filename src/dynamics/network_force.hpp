@@ -15,6 +15,7 @@
 
 #include "dynamics/coupling_force.hpp"
 #include "dynamics/force_precision.hpp"
+#include "dynamics/ordered_sum.hpp"
 #include "parallel/distributed_network.hpp"
 
 namespace hmfnet {
@@ -25,6 +26,7 @@ class NetworkForce : public CouplingForce {
   explicit NetworkForce(const DistributedNetwork& network,
                         ForcePrecision precision = ForcePrecision::float64);
 
+  void prepare(const RotorState& state, std::vector<double>& g, ForceSums& sums) override;
   void evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) override;
   EdgeOffset work_per_evaluation() const override {
     return static_cast<EdgeOffset>(m_adjacency.cols.size());
@@ -48,8 +50,9 @@ class NetworkForce : public CouplingForce {
   std::vector<double> m_owned_cs;   // rows x replicas x [cos, sin]
   std::vector<double> m_column_cs;  // columns x replicas x [cos, sin]
   std::vector<double> m_y;          // rows x replicas x [Re y, Im y]
-  std::vector<double> m_abs_y;      // rows x replicas
-  std::vector<double> m_coupling;   // rows x replicas
+  std::vector<double> m_terms;      // rows x replicas x [|y_n|, Re(e^{-i theta_n} y_n)]
+  std::vector<double> m_term_sums;  // replicas x [sum |y_n|, sum Re(e^{-i theta_n} y_n)]
+  OrderedColumnSums m_sums;
   ForcePrecision m_precision;
   std::vector<float> m_weights_f32;  // float32: the stored weights (empty for 0/1)
   std::vector<float> m_column_f32;   // float32: the gathered table

@@ -7,8 +7,27 @@
 
 namespace hmfnet {
 
-/// out[b] = sum over rows r of values[r * width + b], for b < width.
+/// out[b] = sum over rows r of values[r * width + b], for b < width. Opens its own parallel loop:
+/// call it outside a step's team.
 void ordered_column_sums(const std::vector<double>& values, std::size_t rows, int width,
                          std::vector<double>& out);
+
+/// The same sums inside a step's team (team.hpp): the block partials live here, sized once by
+/// `prepare` outside the region, so that every thread of the team writes the same buffer.
+class OrderedColumnSums {
+ public:
+  /// Outside a region: sizes the partials for `rows` x `width` values.
+  void prepare(std::size_t rows, int width);
+  /// Called by every thread of the team (or outside one): the blocks are shared out, then the
+  /// master thread adds the block sums in order into `out` (out.size() == width, sized by the
+  /// caller). No barrier after it: `out` may be read by the master thread at once, by the others
+  /// only after a later barrier (the end of the region at the latest).
+  void sum(const double* values, double* out);
+
+ private:
+  std::size_t m_rows = 0;
+  std::size_t m_width = 0;
+  std::vector<double> m_partial;  // blocks x width
+};
 
 }  // namespace hmfnet

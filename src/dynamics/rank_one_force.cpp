@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "dynamics/ordered_sum.hpp"
+#include "dynamics/team.hpp"
 #include "parallel/parallel_session.hpp"
 
 namespace hmfnet {
@@ -47,44 +48,64 @@ RankOneForce::RankOneForce(RankOneStructure structure, NodeIndex first_row, Node
       m_rows(rows),
       m_inverse_n(1.0 / static_cast<double>(m_structure.a.size())) {}
 
+void RankOneForce::prepare(const RotorState& state, std::vector<double>& g, ForceSums& sums) {
+  const auto cells =
+      static_cast<std::size_t>(state.rows) * static_cast<std::size_t>(state.replicas);
+  const auto w = static_cast<std::size_t>(state.replicas);
+  m_a_cs.resize(2 * cells);
+  m_z.resize(2 * w);
+  m_z_sums.prepare(static_cast<std::size_t>(state.rows), 2 * state.replicas);
+  g.resize(cells);
+  m_y.resize(2 * cells);
+  m_terms.resize(2 * cells);
+  m_term_sums.resize(2 * w);
+  m_sums.prepare(static_cast<std::size_t>(state.rows), 2 * state.replicas);
+  sums.order.resize(w);
+  sums.coupling.resize(w);
+}
+
 void RankOneForce::evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) {
+  if (outside_team()) prepare(state, g, sums);
   const int nb = state.replicas;
   const auto w = static_cast<std::size_t>(nb);
   const auto rows = static_cast<std::size_t>(state.rows);
   // Z_b = sum_m a_m e^{i theta_m}: ordered local sums, then over ranks.
-  std::vector<double> terms(rows * 2 * w);
+#pragma omp for schedule(static)
   for (std::size_t r = 0; r < rows; ++r) {
     const double a = m_structure.a[static_cast<std::size_t>(m_first_row) + r];
     for (std::size_t b = 0; b < w; ++b) {
-      terms[(r * w + b) * 2] = a * std::cos(state.theta[r * w + b]);
-      terms[(r * w + b) * 2 + 1] = a * std::sin(state.theta[r * w + b]);
+      m_a_cs[(r * w + b) * 2] = a * std::cos(state.theta[r * w + b]);
+      m_a_cs[(r * w + b) * 2 + 1] = a * std::sin(state.theta[r * w + b]);
     }
   }
-  std::vector<double> z;
-  ordered_column_sums(terms, rows, 2 * nb, z);
-  ParallelSession::sum_in_place(z);
-  g.resize(rows * w);
-  m_y.resize(2 * rows * w);
-  m_abs_y.resize(rows * w);
-  m_coupling.resize(rows * w);
+  m_z_sums.sum(m_a_cs.data(), m_z.data());
+  // MPI on the master thread; the barrier after it gives every thread the reduced Z.
+  on_master([&] { ParallelSession::sum_in_place(m_z); });
+#pragma omp for schedule(static)
   for (std::size_t r = 0; r < rows; ++r) {
     const double a = m_structure.a[static_cast<std::size_t>(m_first_row) + r];
     for (std::size_t b = 0; b < w; ++b) {
-      const double c = std::cos(state.theta[r * w + b]), s = std::sin(state.theta[r * w + b]);
-      double yc = a * z[2 * b], ys = a * z[2 * b + 1];
+      const std::size_t k = r * w + b;
+      const double c = std::cos(state.theta[k]), s = std::sin(state.theta[k]);
+      double yc = a * m_z[2 * b], ys = a * m_z[2 * b + 1];
       if (!m_structure.diagonal) {
         yc -= a * a * c;
         ys -= a * a * s;
       }
-      g[r * w + b] = m_inverse_n * (c * ys - s * yc);
-      m_y[2 * (r * w + b)] = yc;
-      m_y[2 * (r * w + b) + 1] = ys;
-      m_abs_y[r * w + b] = std::sqrt(yc * yc + ys * ys);
-      m_coupling[r * w + b] = c * yc + s * ys;
+      g[k] = m_inverse_n * (c * ys - s * yc);
+      m_y[2 * k] = yc;
+      m_y[2 * k + 1] = ys;
+      m_terms[2 * k] = std::sqrt(yc * yc + ys * ys);
+      m_terms[2 * k + 1] = c * yc + s * ys;
     }
   }
-  ordered_column_sums(m_abs_y, rows, nb, sums.order);
-  ordered_column_sums(m_coupling, rows, nb, sums.coupling);
+  // Both sums of every replica in one ordered pass (each column is summed on its own).
+  m_sums.sum(m_terms.data(), m_term_sums.data());
+#pragma omp master
+  for (std::size_t b = 0; b < w; ++b) {
+    sums.order[b] = m_term_sums[2 * b];
+    sums.coupling[b] = m_term_sums[2 * b + 1];
+  }
 }
 
 }  // namespace hmfnet

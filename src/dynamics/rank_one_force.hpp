@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "dynamics/coupling_force.hpp"
+#include "dynamics/ordered_sum.hpp"
 
 namespace hmfnet {
 
@@ -27,6 +28,7 @@ std::optional<RankOneStructure> detect_rank_one(const Network& network);
 class RankOneForce : public CouplingForce {
  public:
   RankOneForce(RankOneStructure structure, NodeIndex first_row, NodeIndex rows);
+  void prepare(const RotorState& state, std::vector<double>& g, ForceSums& sums) override;
   void evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) override;
   EdgeOffset work_per_evaluation() const override { return m_rows; }
   const char* name() const override { return "rank-one"; }
@@ -37,7 +39,13 @@ class RankOneForce : public CouplingForce {
   NodeIndex m_first_row;
   NodeIndex m_rows;
   double m_inverse_n;
-  std::vector<double> m_y, m_abs_y, m_coupling;
+  std::vector<double> m_a_cs;  // rows x replicas x [a cos, a sin]
+  std::vector<double> m_z;     // replicas x [Re Z, Im Z]
+  OrderedColumnSums m_z_sums;
+  std::vector<double> m_y;          // rows x replicas x [Re y, Im y]
+  std::vector<double> m_terms;      // rows x replicas x [|y_n|, Re(e^{-i theta_n} y_n)]
+  std::vector<double> m_term_sums;  // replicas x [sum |y_n|, sum Re(e^{-i theta_n} y_n)]
+  OrderedColumnSums m_sums;
 };
 
 }  // namespace hmfnet

@@ -1,0 +1,160 @@
+// One parallel region per step (dynamics/team.hpp): an error on the master thread leaves the
+// region as an exception (no hang, no termination), the ordered sums of a team equal the serial
+// ones bit for bit, and both forces give the same g and sums in a team of 2 as on one thread.
+#include <omp.h>
+
+#include <algorithm>
+#include <atomic>
+#include <catch2/catch.hpp>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include "dynamics/network_force.hpp"
+#include "dynamics/ordered_sum.hpp"
+#include "dynamics/rank_one_force.hpp"
+#include "dynamics/team.hpp"
+#include "dynamics/thread_choice.hpp"
+#include "network/erdos_renyi.hpp"
+#include "parallel/distributed_network.hpp"
+#include "support/small_networks.hpp"
+
+using namespace hmfnet;
+
+namespace {
+
+struct Evaluation {
+  std::vector<double> g;
+  ForceSums sums;
+  std::vector<double> y;
+};
+
+Evaluation in_a_team(CouplingForce& force, const RotorState& s) {
+  Evaluation e;
+  force.prepare(s, e.g, e.sums);
+  in_team([&] { force.evaluate(s, e.g, e.sums); });
+  e.y = force.local_fields();
+  return e;
+}
+
+// The force evaluated in a team of one thread and in a team of two, each by a force of its own
+// (`make_force()`), so that no buffer filled by the first run can stand in for the second's.
+template <typename MakeForce>
+std::pair<Evaluation, Evaluation> one_and_two_threads(MakeForce make_force, const RotorState& s) {
+  std::pair<Evaluation, Evaluation> e;
+  {
+    const ThreadCountScope one(1);
+    auto force = make_force();
+    e.first = in_a_team(force, s);
+  }
+  const ThreadCountScope two(2);
+  auto force = make_force();
+  e.second = in_a_team(force, s);
+  return e;
+}
+
+void check_identical(const Evaluation& one, const Evaluation& two) {
+  CHECK(one.g == two.g);
+  CHECK(one.y == two.y);
+  CHECK(one.sums.order == two.sums.order);
+  CHECK(one.sums.coupling == two.sums.coupling);
+}
+
+RotorState three_replicas(const DistributedNetwork& d) {
+  return initial_state(d.first_row(), d.local_size(),
+                       {{6.0, 1.0, 21}, {6.0, 0.3, 22}, {6.0, 2.0, 23}});
+}
+
+}  // namespace
+
+TEST_CASE("An error on the master thread leaves the team as an exception after the region",
+          "[team]") {
+  const ThreadCountScope two(2);
+  std::atomic<int> finished{0};
+  int exchanges_after_failure = 0;
+  const auto failing_step = [&] {
+    in_team([&] {
+      on_master([] { throw std::runtime_error("rank 1: import failed"); });
+      on_master([&] { ++exchanges_after_failure; });  // skipped: no exchange after a failed one
+      // The team goes on through its later barriers: a thread that skipped them would hang.
+#pragma omp barrier
+      ++finished;
+    });
+  };
+  REQUIRE_THROWS_WITH(failing_step(), "rank 1: import failed");
+  CHECK(finished == 2);  // both threads reached the end of the region
+  CHECK(exchanges_after_failure == 0);
+  // Outside a region on_master is a plain call.
+  REQUIRE_THROWS_WITH(on_master([] { throw std::runtime_error("serial"); }), "serial");
+}
+
+TEST_CASE("Ordered sums in a team of 2 equal the serial sums bit for bit", "[team]") {
+  // 5000 rows x 3 columns: three blocks of 2048 rows, shared out over two threads.
+  const std::size_t rows = 5000;
+  std::vector<double> values(rows * 3);
+  for (std::size_t k = 0; k < values.size(); ++k) values[k] = 1.0 / (1.0 + static_cast<double>(k));
+  std::vector<double> serial(3, 0.0);
+  {
+    const ThreadCountScope one(1);
+    ordered_column_sums(values, rows, 3, serial);
+  }
+  const ThreadCountScope two(2);
+  OrderedColumnSums sums;
+  sums.prepare(rows, 3);
+  std::vector<double> team(3, -1.0);
+  int team_size = 0;
+  in_team([&] {
+    sums.sum(values.data(), team.data());
+#pragma omp master
+    team_size = omp_get_num_threads();
+  });
+  CHECK(team_size == 2);  // the region really ran two threads
+  CHECK(team == serial);
+  // Both are the documented order, written out here: blocks of 2048 rows, each summed from 0 in
+  // row order, the block sums added in block order.
+  for (std::size_t b = 0; b < 3; ++b) {
+    double total = 0.0;
+    for (std::size_t first = 0; first < rows; first += 2048) {
+      double block = 0.0;
+      for (std::size_t r = first; r < std::min(rows, first + 2048); ++r) block += values[r * 3 + b];
+      total += block;
+    }
+    CHECK(team[b] == total);
+  }
+}
+
+TEST_CASE("Sparse and rank-one forces: a team of 2 gives what one thread gives, bit for bit",
+          "[team]") {
+  const Network net = erdos_renyi({600, 0.05, 4});
+  const DistributedNetwork d(net);
+  const RotorState s = three_replicas(d);
+  const auto [one, two] = one_and_two_threads([&] { return NetworkForce(d); }, s);
+  check_identical(one, two);
+
+  // The all-to-all force without self-loops (rank one, a = 1) on 5000 rotors: three sum
+  // blocks. Built from its structure alone (a complete network of that size would hold 2.5e7
+  // entries); each rank takes every row, which changes Z but not the comparison.
+  RankOneStructure all_to_all;
+  all_to_all.a.assign(5000, 1.0);
+  all_to_all.diagonal = false;
+  const RotorState sc = initial_state(0, 5000, {{6.0, 1.0, 21}, {6.0, 0.3, 22}, {6.0, 2.0, 23}});
+  const auto [r1, r2] = one_and_two_threads([&] { return RankOneForce(all_to_all, 0, 5000); }, sc);
+  check_identical(r1, r2);
+}
+
+TEST_CASE("The rank-one force in a team of 2 is the sparse force of the complete graph", "[team]") {
+  const ThreadCountScope two(2);
+  const Network complete = test::complete(400, false);
+  auto structure = detect_rank_one(complete);
+  REQUIRE(structure.has_value());
+  const DistributedNetwork d(complete);
+  RankOneForce rank_one(*structure, d.first_row(), d.local_size());
+  NetworkForce sparse(d);
+  const RotorState s = three_replicas(d);
+  const Evaluation fast = in_a_team(rank_one, s), reference = in_a_team(sparse, s);
+  // Same sums in another order: g is O(1) and 400 terms of O(1) differ by a few ulps each.
+  double worst = 0.0;
+  for (std::size_t k = 0; k < fast.g.size(); ++k)
+    worst = std::max(worst, std::abs(fast.g[k] - reference.g[k]));
+  CHECK(worst < 1e-12);
+}
