@@ -3,11 +3,25 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <string>
 
 namespace hmfnet {
 
-int default_threads(std::int64_t work, int available) {
-  const std::int64_t by_work = std::max<std::int64_t>(1, work / k_work_per_thread);
+WaitPolicy wait_policy_from_environment() {
+  const char* value = std::getenv("OMP_WAIT_POLICY");
+  if (value == nullptr) return WaitPolicy::spinning;
+  std::string policy(value);
+  std::transform(policy.begin(), policy.end(), policy.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  return policy == "PASSIVE" ? WaitPolicy::passive : WaitPolicy::spinning;
+}
+
+int default_threads(std::int64_t work, int available, WaitPolicy policy) {
+  const std::int64_t per_thread =
+      policy == WaitPolicy::passive ? k_work_per_thread_passive : k_work_per_thread_spinning;
+  const std::int64_t by_work = std::max<std::int64_t>(1, work / per_thread);
   return static_cast<int>(std::min<std::int64_t>(std::max(1, available), by_work));
 }
 
