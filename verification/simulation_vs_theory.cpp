@@ -232,6 +232,9 @@ void check_panel(ClaimCheck& check, const Panel& panel, const Scale& sc) {
   p.record_stride = 100;
   // Each K from the incoherent state: the theory's E and P are those of that state.
   p.continue_state = false;
+  // All K in one pass over the network (replica_lanes.hpp: the same bits); per-K steps need a
+  // pass each.
+  p.K_across_replicas = !sc.pipeline_steps;
   NetworkForce force(d);
   const SimulationResult sim = simulate(d, panel.net.degrees(), force, p);
   verification::account(check, p, sim);

@@ -112,6 +112,7 @@ std::vector<double> measure_gap(ClaimCheck& check, const Case& c, const Distribu
     p.replicas.push_back({6.0, kSigma0, static_cast<std::uint64_t>(300 + b)});
   p.record_stride = 100;
   p.continue_state = false;
+  p.K_across_replicas = true;  // both K in one pass (replica_lanes.hpp: the same bits)
   NetworkForce force(d);
   const SimulationResult sim = simulate(d, c.net.degrees(), force, p);
   verification::account(check, p, sim);

@@ -170,6 +170,9 @@ void add_simulate_options(CLI::App& app, SimulateFlags& f, const Run& run) {
   c->add_option("--phase-bins", f.phase_bins, "--node-data: histogram bins (default 72)")
       ->check(CLI::Range(1, 100000));
   c->add_flag("--restart-each-K", f.restart_each_K, "Each K starts from the initial state");
+  c->add_flag("--K-across-replicas", f.K_across_replicas,
+              "Run every K at once as replicas of one pass (implies --restart-each-K; same "
+              "results, one pass over the network per step for all K; K values x replicas <= 64)");
   c->add_option("--record-stride", f.record_stride, "Steps between time-series records")
       ->check(CLI::Range(1, 1000000000));
   c->add_option("--energy-tolerance", f.energy_tolerance,

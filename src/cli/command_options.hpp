@@ -75,7 +75,8 @@ struct SimulateFlags {
   int threads = 0;
   std::string output, checkpoint, force = "auto", integrator = "leapfrog";
   std::string precision = "float64";
-  bool resume = false, json = false, quiet = false, node_data = false, restart_each_K = false;
+  bool resume = false, json = false, quiet = false, node_data = false, restart_each_K = false,
+       K_across_replicas = false;
   int record_stride = 100;
   double energy_tolerance = 1e-2;
   int rotor_node = 0;

@@ -86,7 +86,8 @@ SimulationParameters parameters(const SimulateFlags& f, double Kc) {
   if (!f.K.empty()) p.K = f.K;
   for (const double r : f.K_over_Kc) p.K.push_back(r * Kc);
   if (!f.sweep.empty()) p.K = parse_sweep(f.sweep);
-  p.continue_state = !f.restart_each_K;
+  p.continue_state = !(f.restart_each_K || f.K_across_replicas);
+  p.K_across_replicas = f.K_across_replicas;
   p.replicas.clear();
   for (int b = 0; b < f.replicas; ++b) {
     p.replicas.push_back({f.omega, f.sigma0, f.seed + static_cast<std::uint64_t>(b)});
@@ -177,9 +178,9 @@ void run(const SimulateFlags& f) {
   out["steps"] = result.steps;
   out["integration_seconds"] = result.integration_seconds;
   // Aggregate over replicas: each step reads every stored entry once per replica's sum.
-  out["nnz_steps_per_second"] =
-      static_cast<double>(result.nnz_per_evaluation) * static_cast<double>(result.steps) *
-      static_cast<double>(params.replicas.size()) / result.integration_seconds;
+  out["nnz_steps_per_second"] = static_cast<double>(result.nnz_per_evaluation) *
+                                static_cast<double>(result.steps) *
+                                static_cast<double>(result.lanes) / result.integration_seconds;
   out["resumed"] = result.resumed;
   out["threads"] = result.threads;
   for (const auto& p : result.points) out["points"].push_back(point_json(p, Kc));

@@ -152,7 +152,7 @@ std::uintmax_t estimated_run_file_bytes(const SimulationParameters& params, Node
 std::uintmax_t estimated_checkpoint_bytes(const SimulationParameters& params, NodeIndex n) {
   // The results so far plus the state (theta, p), the node-data accumulators (theta_T1,
   // R_node_sum, 8 per-row sums) and the batch sums.
-  const double N = static_cast<double>(n), replicas = static_cast<double>(params.replicas.size());
+  const double N = static_cast<double>(n), replicas = static_cast<double>(lanes(params));
   double state = 2.0 * N * replicas + 64.0 * replicas;
   if (params.node_data) state += 2.0 * N * replicas + 8.0 * N;
   return static_cast<std::uintmax_t>(8.0 * (result_doubles(params, N) + state) + k_metadata_bytes);

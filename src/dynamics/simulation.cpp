@@ -14,6 +14,7 @@
 #include "dynamics/interrupt.hpp"
 #include "dynamics/node_statistics.hpp"
 #include "dynamics/ordered_sum.hpp"
+#include "dynamics/replica_lanes.hpp"
 #include "dynamics/segment_state.hpp"
 #include "dynamics/thread_choice.hpp"
 #include "dynamics/time_average.hpp"
@@ -71,11 +72,16 @@ struct Observables {
 //    blow-up), so no rank waits in a collective that another has skipped.
 class Run {
  public:
+  /// `lane_K`: each replica's K for a run across replicas (replica_lanes.hpp), or empty: every
+  /// replica at the schedule's K. `identity`: the parameters the checkpoint's fingerprint names.
   Run(const DistributedNetwork& network, const std::vector<double>& degrees, CouplingForce& force,
-      const SimulationParameters& params)
+      const SimulationParameters& params, std::vector<double> lane_K,
+      const SimulationParameters& identity)
       : m_network(network),
         m_force(force),
         m_params(params),
+        m_identity(identity),
+        m_lane_K(std::move(lane_K)),
         m_integrator(make_integrator(step_at(params, 0).integrator)),
         m_h(step_at(params, 0).h),
         m_f(force),
@@ -87,11 +93,14 @@ class Run {
   SimulationResult execute();
 
  private:
-  std::vector<double> K_per_replica(double K) const {
-    return std::vector<double>(static_cast<std::size_t>(m_width), K);
+  /// K of every replica in segment k.
+  std::vector<double> segment_K(int k) const {
+    if (!m_lane_K.empty()) return m_lane_K;
+    return std::vector<double>(static_cast<std::size_t>(m_width),
+                               m_params.K[static_cast<std::size_t>(k)]);
   }
   std::vector<double> order_parameter() const;
-  Observables observe(double K) const;
+  Observables observe(const std::vector<double>& K) const;
   std::vector<double> energy_errors(const Observables& o) const;
   void use_step(int k_index);
   std::int64_t segment_steps() const { return steps_for(m_params.duration, m_h); }
@@ -101,19 +110,21 @@ class Run {
   void finish_segment(int k_index);
   void record(int k_index);
   void sample();
-  void guard(double K, const std::vector<double>& errors);
+  void guard(const std::vector<double>& K, const std::vector<double>& errors);
   void maybe_checkpoint(int k_index, bool force_now);
   void finish(bool interrupted);
   void restore(const Checkpoint& c);
   std::int64_t rotor_samples() const;
   void progress(int k_index, bool final_line) const;
   std::string run_fingerprint() const {
-    return fingerprint(m_params, m_network.global_size(), m_network.global_nnz());
+    return fingerprint(m_identity, m_network.global_size(), m_network.global_nnz());
   }
 
   const DistributedNetwork& m_network;
   CouplingForce& m_force;
   const SimulationParameters& m_params;
+  const SimulationParameters& m_identity;
+  std::vector<double> m_lane_K;
   std::unique_ptr<Integrator> m_integrator;  // of the current segment (step_at)
   double m_h;                                // of the current segment
   TimeOrigin m_origin;                       // of the current segment (time_origin)
@@ -139,7 +150,7 @@ std::vector<double> Run::order_parameter() const {
   return R;
 }
 
-Observables Run::observe(double K) const {
+Observables Run::observe(const std::vector<double>& K) const {
   const auto rows = static_cast<std::size_t>(m_state.rows);
   std::vector<double> p2(m_state.p.size()), absp(m_state.p.size());
   for (std::size_t k = 0; k < p2.size(); ++k) {
@@ -161,7 +172,7 @@ Observables Run::observe(double K) const {
   o.R = order_parameter();
   for (std::size_t b = 0; b < w; ++b) {
     // eq:hamiltonianNetworkCase: H = sum p^2/2 - (K/2N) sum_nm A_nm cos(theta_m - theta_n).
-    o.energy.push_back(all[b] - K / (2.0 * m_n) * all[3 * w + b]);
+    o.energy.push_back(all[b] - K[b] / (2.0 * m_n) * all[3 * w + b]);
     o.momentum.push_back(all[w + b]);
     o.momentum_scale.push_back(all[2 * w + b]);
   }
@@ -186,13 +197,12 @@ SegmentState Run::fresh_segment(double omega) const {
 }
 
 void Run::start_segment(int k_index) {
-  const double K = m_params.K[static_cast<std::size_t>(k_index)];
   use_step(k_index);
   if (!m_params.continue_state && k_index > 0) {
     m_state = initial_state(m_network.first_row(), m_network.local_size(), m_params.replicas);
     m_f.update(m_state);
   }
-  const Observables o = observe(K);
+  const Observables o = observe(segment_K(k_index));
   m_seg = fresh_segment(o.momentum[0] / m_n);
   m_seg.energy0 = o.energy;
   m_seg.momentum0 = o.momentum;
@@ -235,7 +245,7 @@ std::vector<double> Run::energy_errors(const Observables& o) const {
   return errors;
 }
 
-void Run::guard(double K, const std::vector<double>& errors) {
+void Run::guard(const std::vector<double>& K, const std::vector<double>& errors) {
   // Every rank holds the same (reduced) energies, so every rank takes the same branch.
   for (std::size_t b = 0; b < errors.size(); ++b) {
     const double err = errors[b];
@@ -249,7 +259,7 @@ void Run::guard(double K, const std::vector<double>& errors) {
       max_r = std::max(max_r, std::hypot(y[2 * k], y[2 * k + 1]) / m_n);
     }
     max_r = ParallelSession::max(max_r);
-    const double omega = std::sqrt(K * max_r);
+    const double omega = std::sqrt(K[b] * max_r);
     const double limit = m_integrator->stability_limit();
     const std::string what = std::isfinite(err) ? "relative energy error " + std::to_string(err) +
                                                       " exceeds the tolerance " +
@@ -260,14 +270,14 @@ void Run::guard(double K, const std::vector<double>& errors) {
                   "K = %g, t = %g (replica %zu): %s; the step h = %g is likely too large for "
                   "this K: %s is stable for h * omega_max < %.4g with omega_max = "
                   "sqrt(K max_n R_n) = %.4g, i.e. h < %.4g",
-                  K, static_cast<double>(m_seg.step) * m_h, b, what.c_str(), m_h,
+                  K[b], static_cast<double>(m_seg.step) * m_h, b, what.c_str(), m_h,
                   m_integrator->name().c_str(), limit, omega, omega > 0 ? limit / omega : INFINITY);
     throw SimulationBlowUp(message);
   }
 }
 
 void Run::record(int k_index) {
-  const double K = m_params.K[static_cast<std::size_t>(k_index)];
+  const std::vector<double> K = segment_K(k_index);
   const Observables o = observe(K);
   if (m_params.node_data && m_seg.step > transient_steps()) {
     m_seg.stats.add_rotor_sample(m_state, static_cast<double>(m_seg.step) * m_h);
@@ -280,7 +290,7 @@ void Run::record(int k_index) {
   }
   auto& ts = m_result.series;
   ts.t.push_back(m_origin.t + static_cast<double>(m_result.steps - m_origin.steps) * m_h);
-  ts.K.push_back(K);
+  ts.K.push_back(K.front());  // a run across replicas has its K per record from split_lanes
   ts.R.insert(ts.R.end(), o.R.begin(), o.R.end());
   ts.energy.insert(ts.energy.end(), o.energy.begin(), o.energy.end());
   ts.momentum.insert(ts.momentum.end(), o.momentum.begin(), o.momentum.end());
@@ -415,7 +425,7 @@ SimulationResult Run::execute() {
       start_segment(k);
       maybe_checkpoint(k, true);  // at every K: a resume restarts here at worst
     }
-    const std::vector<double> K = K_per_replica(m_params.K[static_cast<std::size_t>(k)]);
+    const std::vector<double> K = segment_K(k);
     const std::int64_t steps = segment_steps(), transient = transient_steps();
     while (m_seg.step < steps) {
       if (m_params.stop_after_steps > 0 && ++session_steps > m_params.stop_after_steps) {
@@ -457,12 +467,20 @@ SimulationResult simulate(const DistributedNetwork& network, const std::vector<d
                          "0 <= node < N = " + std::to_string(network.global_size()));
   }
   const auto work = static_cast<std::int64_t>(force.work_per_evaluation()) *
-                    static_cast<std::int64_t>(params.replicas.size());
+                    static_cast<std::int64_t>(lanes(params));
   const ThreadCountScope threads(params.threads > 0 ? params.threads
                                                     : default_threads(work, omp_get_max_threads()));
-  Run run(network, degrees, force, params);
-  SimulationResult result = run.execute();
+  SimulationResult result;
+  if (params.K_across_replicas) {
+    const SimulationParameters one_pass = lane_parameters(params);
+    Run run(network, degrees, force, one_pass, lane_couplings(params), params);
+    result = split_lanes(run.execute(), params);
+  } else {
+    Run run(network, degrees, force, params, {}, params);
+    result = run.execute();
+  }
   result.threads = omp_get_max_threads();
+  result.lanes = static_cast<int>(lanes(params));
   return result;
 }
 

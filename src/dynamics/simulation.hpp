@@ -5,8 +5,9 @@
 // <R>_t (eq:timeAverage, eq:globalOrderParam) is averaged over the rest. Recorded on a stride:
 // R(t), the energy H (eq:hamiltonianNetworkCase) and the total momentum (both conserved).
 //
-// B replicas (seeds, sigma0, Omega) run side by side in one pass over the network. A run can be
-// checkpointed and resumed bit-identically; a blow-up (NaN or energy error above a tolerance)
+// B replicas (seeds, sigma0, Omega) run side by side in one pass over the network; with
+// K_across_replicas, so do the K values of a restart-each-K schedule (replica_lanes.hpp). A run can
+// be checkpointed and resumed bit-identically; a blow-up (NaN or energy error above a tolerance)
 // stops it with the likely cause.
 #include <cstdint>
 #include <functional>
@@ -55,6 +56,7 @@ struct SimulationResult {
   double integration_seconds = 0.0;   ///< the stepping loop only (no set-up, no I/O)
   EdgeOffset nnz_per_evaluation = 0;  ///< summed over ranks
   int threads = 1;                    ///< OpenMP threads per rank the stepping used
+  int lanes = 1;                      ///< replicas integrated side by side per step (lanes(params))
   std::string force_name;
   bool resumed = false;
   bool interrupted = false;  ///< stopped by stop_after_steps or a signal: points incomplete

@@ -36,7 +36,39 @@ void validate_steps(const SimulationParameters& p) {
   }
 }
 
+// K_across_replicas runs the schedule as one segment of K.size() x replicas.size() lanes.
+void validate_across(const SimulationParameters& p) {
+  if (!p.K_across_replicas) return;
+  if (p.continue_state) {
+    throw ParameterError("K across replicas", "with each K continuing from the previous one",
+                         "each K from the initial condition (continue_state = false, "
+                         "--restart-each-K): K values run side by side cannot continue each other");
+  }
+  for (std::size_t k = 1; k < p.steps.size(); ++k) {
+    if (p.steps[k].h != p.steps[0].h || p.steps[k].integrator != p.steps[0].integrator) {
+      throw ParameterError("K across replicas",
+                           "steps[" + std::to_string(k) + "] differs from steps[0]",
+                           "one integrator and h for every K (lanes share each step)");
+    }
+  }
+  if (p.node_data) {
+    throw ParameterError("K across replicas", "with node_data",
+                         "no per-node statistics (they follow one replica per K: run the K "
+                         "values one after another)");
+  }
+  if (lanes(p) > 64) {
+    throw ParameterError(
+        "K across replicas",
+        std::to_string(p.K.size()) + " K x " + std::to_string(p.replicas.size()) + " replicas",
+        "at most 64 lanes per pass");
+  }
+}
+
 }  // namespace
+
+std::size_t lanes(const SimulationParameters& p) {
+  return p.replicas.size() * (p.K_across_replicas ? p.K.size() : 1);
+}
 
 StepChoice step_at(const SimulationParameters& p, std::size_t k) {
   return p.steps.empty() ? StepChoice{p.integrator, p.h} : p.steps.at(k);
@@ -72,6 +104,7 @@ void validate(const SimulationParameters& p) {
   if (!positive(p.energy_tolerance)) {
     throw ParameterError("energy tolerance", std::to_string(p.energy_tolerance), "> 0");
   }
+  validate_across(p);
 }
 
 nlohmann::json to_json(const SimulationParameters& p) {
@@ -85,6 +118,7 @@ nlohmann::json to_json(const SimulationParameters& p) {
           {"transient", p.transient},
           {"K", p.K},
           {"continue_state", p.continue_state},
+          {"K_across_replicas", p.K_across_replicas},
           {"replicas", replicas},
           {"record_stride", p.record_stride},
           {"batches", p.batches},

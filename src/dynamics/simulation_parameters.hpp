@@ -22,6 +22,11 @@ struct SimulationParameters {
   /// true: the paper's protocol, each K continues from the state left by the previous one;
   /// false: each K restarts from the initial condition.
   bool continue_state = true;
+  /// true: every K of the schedule runs at once, as its own set of replicas (lane m R + r is
+  /// replica r at K_m: replica_lanes.hpp), in one pass over the network instead of one pass per
+  /// K; results equal the continue_state = false run bit for bit. Needs continue_state = false,
+  /// one step for every K, no node_data and K.size() x replicas.size() <= 64.
+  bool K_across_replicas = false;
   std::vector<InitialCondition> replicas{InitialCondition{}};
   int record_stride = 100;         ///< steps between time-series records
   int batches = 20;                ///< batch means for the SEM of <R>_t
@@ -47,6 +52,10 @@ struct SimulationParameters {
   /// thread_choice.hpp) among the threads OpenMP offers. Results are bit-identical for any count.
   int threads = 0;
 };
+
+/// Replicas integrated side by side in each step: replicas.size(), times K.size() when
+/// K_across_replicas.
+std::size_t lanes(const SimulationParameters& params);
 
 /// Throws ParameterError naming the first parameter out of range.
 void validate(const SimulationParameters& params);

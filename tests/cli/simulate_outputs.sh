@@ -2,7 +2,8 @@
 # `hmfnet simulate --json -o OUT.h5` prints the promised keys and writes a results file;
 # `--resume` with no checkpoint present starts from the beginning and gives the same numbers;
 # `--precision float32` runs the float32 sparse kernel (named in the output) and is refused
-# with `--force rank-one` (that path has no float32 variant).
+# with `--force rank-one` (that path has no float32 variant); `--K-across-replicas` gives the
+# numbers of `--restart-each-K` (one pass for every K) and is refused with `--node-data`.
 # Usage: simulate_outputs.sh HMFNET NETWORK OUTDIR
 set -euo pipefail
 hmfnet=$1 net=$2 out=$3
@@ -11,6 +12,13 @@ args=(simulate "$net" --K-sweep 0:40:20 --h 0.02 --T 4 --transient 1 --seed 7 --
 plain=$("$hmfnet" "${args[@]}" -o "$out/sim.h5")
 resumed=$("$hmfnet" "${args[@]}" --checkpoint "$out/sim.ckpt.h5" --resume)
 single=$("$hmfnet" "${args[@]}" --precision float32)
+restart=$("$hmfnet" "${args[@]}" --replicas 2 --restart-each-K)
+across=$("$hmfnet" "${args[@]}" --replicas 2 --K-across-replicas)
+if "$hmfnet" "${args[@]}" --K-across-replicas --node-data 2> "$out/refusal.txt"; then
+  echo "--K-across-replicas --node-data was accepted"; exit 1
+fi
+grep -q "K across replicas: with node_data" "$out/refusal.txt" \
+  || { echo "unexpected refusal: $(cat "$out/refusal.txt")"; exit 1; }
 if "$hmfnet" "${args[@]}" --precision float32 --force rank-one 2> "$out/refusal.txt"; then
   echo "--precision float32 --force rank-one was accepted"; exit 1
 fi
@@ -18,9 +26,11 @@ grep -q -- "--precision: float32 (allowed: only for the sparse force" "$out/refu
   || { echo "unexpected refusal: $(cat "$out/refusal.txt")"; exit 1; }
 test -s "$out/sim.h5" || { echo "no results file written"; exit 1; }
 ls "$out"/sim.h5.tmp.* 2>/dev/null && { echo "temporary left behind"; exit 1; }
-python3 - "$plain" "$resumed" "$single" <<'PY'
+python3 - "$plain" "$resumed" "$single" "$restart" "$across" <<'PY'
 import json, sys
-a, b, f = (json.loads(x) for x in sys.argv[1:4])
+a, b, f, r, x = (json.loads(x) for x in sys.argv[1:6])
+assert r["points"] == x["points"], ("across replicas differs", r["points"], x["points"])
+assert 3 * x["steps"] == r["steps"], (x["steps"], r["steps"])
 assert a["force"] == "sparse" and f["force"] == "sparse-float32", (a["force"], f["force"])
 assert [p["energy_rel_error_max"] < 1e-2 for p in f["points"]] == [True] * 3, f["points"]
 for key in ("nnz", "nnz_steps_per_second", "points", "Kc", "lambda"):

@@ -159,7 +159,7 @@ inline const std::vector<std::string>& argument_tokens() {
       "--target-rho", "--max-attempts", "--json", "--sigma0", "--tolerance", "--K", "--K-over-Kc",
       "--K-sweep", "--omega", "--h", "--T", "--transient", "--replicas", "--threads",
       "--checkpoint", "--resume", "--quiet", "--node-data", "--rotor-node", "--phase-bins",
-      "--restart-each-K", "--record-stride", "--energy-tolerance", "--integrator", "--force",
+      "--restart-each-K", "--K-across-replicas", "--record-stride", "--energy-tolerance", "--integrator", "--force",
       "--symmetrize", "--index-base", "--nodes",
       // values: inside, on and outside every stated range
       "nan", "-nan", "inf", "-inf", "-1", "0", "-0", "1e-300", "1e-16", "1e-15", "1e-14", "0.01",
