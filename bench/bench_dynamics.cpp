@@ -3,6 +3,9 @@
 //  - LeapFrogStep/N/degree/replicas/threads/precision: hmfnet's fused kernel (sincos once per
 //    rotor, interleaved [cos, sin] per neighbour for all replicas, Tpetra Import of ghosts), one
 //    step; precision 0 = float64, 1 = float32 gathered table and accumulation;
+//  - YardstickStep/N/degree/threads: issue #16's yardstick, the plain OpenMP CSR loop over an
+//    interleaved [cos, sin] array (one accumulator pair per row, an `omp parallel for` per loop,
+//    the same flags), one step of one replica;
 //  - PlainCsrStep: the textbook loop a user would write first: two CSR products over separate
 //    cos and sin arrays, then the kick and drift (1 thread);
 //  - IndexStreamFloor: reading the int32 column array once (the memory floor of any pass).
@@ -71,6 +74,41 @@ void PlainCsrStep(benchmark::State& state) {
       static_cast<double>(net.nnz()), benchmark::Counter::kIsIterationInvariantRate);
 }
 
+void YardstickStep(benchmark::State& state) {
+  const Network& net = bench::cached_erdos_renyi(static_cast<NodeIndex>(state.range(0)),
+                                                 static_cast<double>(state.range(1)));
+  omp_set_num_threads(static_cast<int>(state.range(2)));
+  const NodeIndex n = net.size();
+  const auto size = static_cast<std::size_t>(n);
+  const EdgeOffset* row_ptr = net.row_ptr().data();
+  const NodeIndex* cols = net.cols().data();
+  std::vector<double> theta(size), p(size, 6.0), cs(2 * size), g(size);
+  for (std::size_t i = 0; i < size; ++i) theta[i] = 0.001 * static_cast<double>(i);
+  const double h = 0.01, K = 50.0, inv_n = 1.0 / static_cast<double>(n);
+  for (auto _ : state) {
+#pragma omp parallel for schedule(static)
+    for (NodeIndex i = 0; i < n; ++i)
+      ::sincos(theta[std::size_t(i)], &cs[2 * std::size_t(i) + 1], &cs[2 * std::size_t(i)]);
+#pragma omp parallel for schedule(static)
+    for (NodeIndex i = 0; i < n; ++i) {
+      double yc = 0.0, ys = 0.0;
+      for (EdgeOffset k = row_ptr[i]; k < row_ptr[i + 1]; ++k) {
+        yc += cs[2 * std::size_t(cols[k])];
+        ys += cs[2 * std::size_t(cols[k]) + 1];
+      }
+      g[std::size_t(i)] = inv_n * (cs[2 * std::size_t(i)] * ys - cs[2 * std::size_t(i) + 1] * yc);
+    }
+#pragma omp parallel for schedule(static)
+    for (NodeIndex i = 0; i < n; ++i) {
+      p[std::size_t(i)] += h * K * g[std::size_t(i)];
+      theta[std::size_t(i)] += h * p[std::size_t(i)];
+    }
+    benchmark::DoNotOptimize(theta.data());
+  }
+  state.counters["nnz_steps_per_s"] = benchmark::Counter(
+      static_cast<double>(net.nnz()), benchmark::Counter::kIsIterationInvariantRate);
+}
+
 void IndexStreamFloor(benchmark::State& state) {
   const Network& net = bench::cached_erdos_renyi(static_cast<NodeIndex>(state.range(0)),
                                                  static_cast<double>(state.range(1)));
@@ -85,15 +123,14 @@ void IndexStreamFloor(benchmark::State& state) {
 
 }  // namespace
 
-// Args: N, mean degree, replicas, threads, precision (0 float64, 1 float32).
+// Args: N, mean degree, replicas, threads, precision (0 float64, 1 float32). The table of
+// bench/ensemble_table.sh: these, YardstickStep and GatherBound (bench_gather_bound.cpp).
 BENCHMARK(LeapFrogStep)
-    ->Args({10000, 100, 1, 1, 0})
-    ->Args({10000, 100, 1, 1, 1})
-    ->Args({10000, 100, 1, 2, 0})
-    ->Args({10000, 100, 4, 2, 0})
-    ->Args({10000, 100, 8, 1, 0})
-    ->Args({10000, 100, 8, 1, 1})
-    ->Args({10000, 100, 8, 2, 0})
+    ->ArgsProduct({{10000, 1000000}, {100}, {1, 4, 8}, {1, 2}, {0, 1}})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(YardstickStep)
+    ->ArgsProduct({{10000, 1000000}, {100}, {1, 2}})
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(PlainCsrStep)->Args({10000, 100})->Unit(benchmark::kMillisecond);
