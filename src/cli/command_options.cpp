@@ -132,14 +132,19 @@ void add_simulate_options(CLI::App& app, SimulateFlags& f, const Run& run) {
                                "Integrate the HMF rotors on a network over a schedule of K "
                                "(the paper's protocol: each K continues from the current state)");
   c->add_option("input", f.input, "Network file (.mtx, .h5, edge list)")->required();
-  c->add_option("--sigma0", f.sigma0, "Std of the initial Gaussian momenta (default 0.35)")
+  c->add_option("--sigma0", f.sigma0, "Standard deviation of the initial momenta (default 0.35)")
       ->check(k_positive);
   c->add_option("--omega", f.omega, "Mean of the initial momenta (default 6)")->check(k_finite);
+  c->add_option("--momenta", f.momenta,
+                "Initial momenta: gaussian (the paper) or waterbag (uniform on omega +- "
+                "sqrt(3) sigma0); K_c is that distribution's linear threshold")
+      ->check(CLI::IsMember({"gaussian", "waterbag"}));
   auto* k = c->add_option("--K", f.K, "Couplings, comma separated")
                 ->delimiter(',')
                 ->check(k_non_negative);
   auto* kr = c->add_option("--K-over-Kc", f.K_over_Kc,
-                           "Couplings as multiples of K_c = 2 sigma0^2 N / lambda")
+                           "Couplings as multiples of K_c = 2 sigma0^2 N / lambda (Gaussian), "
+                           "6 sigma0^2 N / lambda (water-bag)")
                  ->delimiter(',')
                  ->check(k_non_negative);
   auto* ks = c->add_option("--K-sweep", f.sweep, "START:STOP:STEP (the paper's sweep)");

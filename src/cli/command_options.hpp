@@ -75,6 +75,7 @@ struct SimulateFlags {
   int threads = 0;
   std::string output, checkpoint, force = "auto", integrator = "leapfrog";
   std::string precision = "float64";
+  std::string momenta = "gaussian";
   bool resume = false, json = false, quiet = false, node_data = false, restart_each_K = false,
        K_across_replicas = false;
   int record_stride = 100;

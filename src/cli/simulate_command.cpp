@@ -90,7 +90,8 @@ SimulationParameters parameters(const SimulateFlags& f, double Kc) {
   p.K_across_replicas = f.K_across_replicas;
   p.replicas.clear();
   for (int b = 0; b < f.replicas; ++b) {
-    p.replicas.push_back({f.omega, f.sigma0, f.seed + static_cast<std::uint64_t>(b)});
+    p.replicas.push_back({f.omega, f.sigma0, f.seed + static_cast<std::uint64_t>(b),
+                          parse_momentum_distribution(f.momenta, "--momenta")});
   }
   p.record_stride = f.record_stride;
   p.energy_tolerance = f.energy_tolerance;
@@ -144,7 +145,8 @@ void run(const SimulateFlags& f) {
   const Network net = f.read.read(f.input);
   const DistributedNetwork distributed(net);
   const PerronResult perron = perron_eigenpair(distributed);
-  const double Kc = critical_coupling(f.sigma0, net.size(), perron.lambda);
+  const double Kc = critical_coupling(parse_momentum_distribution(f.momenta, "--momenta"), f.sigma0,
+                                      net.size(), perron.lambda);
   const SimulationParameters params = parameters(f, Kc);
   // Before any work: every output location must hold what the run will write (a checkpoint in
   // the same directory as the results counts against the same space).
@@ -173,6 +175,7 @@ void run(const SimulateFlags& f) {
   out["nnz"] = net.nnz();
   out["lambda"] = perron.lambda;
   out["Kc"] = Kc;
+  out["momenta"] = f.momenta;
   out["force"] = result.force_name;
   out["integrator"] = step_at(params, 0).integrator;
   out["steps"] = result.steps;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "network/network.hpp"
+#include "theory/momentum_distribution.hpp"
 
 namespace hmfnet {
 
@@ -24,11 +25,14 @@ struct RotorState {
 };
 
 /// Initial condition of one replica (paper, Sec. numericalExperiments): theta_n uniform in
-/// [0, 2 pi), p_n ~ Gaussian(omega, sigma0).
+/// [0, 2 pi), p_n ~ Gaussian(omega, sigma0), or uniform on [omega - D, omega + D) with
+/// D = sqrt(3) sigma0 for the water-bag (momentum_distribution.hpp): mean omega and standard
+/// deviation sigma0 either way.
 struct InitialCondition {
   double omega = 6.0;
   double sigma0 = 0.35;
   std::uint64_t seed = 0;
+  MomentumDistribution momenta = MomentumDistribution::gaussian;
 };
 
 /// Node n of a replica draws from random stream n of that replica's seed, so the state does not

@@ -110,7 +110,10 @@ void validate(const SimulationParameters& p) {
 nlohmann::json to_json(const SimulationParameters& p) {
   nlohmann::json replicas = nlohmann::json::array(), steps = nlohmann::json::array();
   for (const auto& r : p.replicas) {
-    replicas.push_back({{"omega", r.omega}, {"sigma0", r.sigma0}, {"seed", r.seed}});
+    replicas.push_back({{"omega", r.omega},
+                        {"sigma0", r.sigma0},
+                        {"seed", r.seed},
+                        {"momenta", name_of(r.momenta)}});
   }
   for (const auto& s : p.steps) steps.push_back({{"integrator", s.integrator}, {"h", s.h}});
   return {{"h", p.h},

@@ -18,4 +18,11 @@ double critical_coupling(double sigma0, double n, double lambda) {
   return 2.0 * sigma0 * sigma0 * n / lambda;
 }
 
+double critical_coupling(MomentumDistribution g, double sigma0, double n, double lambda) {
+  const double gaussian = critical_coupling(sigma0, n, lambda);
+  if (g == MomentumDistribution::gaussian) return gaussian;
+  const double D = waterbag_half_width(sigma0);
+  return 2.0 * D * D * n / lambda;
+}
+
 }  // namespace hmfnet

@@ -3,7 +3,8 @@
 # `--resume` with no checkpoint present starts from the beginning and gives the same numbers;
 # `--precision float32` runs the float32 sparse kernel (named in the output) and is refused
 # with `--force rank-one` (that path has no float32 variant); `--K-across-replicas` gives the
-# numbers of `--restart-each-K` (one pass for every K) and is refused with `--node-data`.
+# numbers of `--restart-each-K` (one pass for every K) and is refused with `--node-data`;
+# `--momenta waterbag` reports K_c = 6 sigma0^2 N / lambda, three times the Gaussian's.
 # Usage: simulate_outputs.sh HMFNET NETWORK OUTDIR
 set -euo pipefail
 hmfnet=$1 net=$2 out=$3
@@ -12,6 +13,7 @@ args=(simulate "$net" --K-sweep 0:40:20 --h 0.02 --T 4 --transient 1 --seed 7 --
 plain=$("$hmfnet" "${args[@]}" -o "$out/sim.h5")
 resumed=$("$hmfnet" "${args[@]}" --checkpoint "$out/sim.ckpt.h5" --resume)
 single=$("$hmfnet" "${args[@]}" --precision float32)
+waterbag=$("$hmfnet" "${args[@]}" --momenta waterbag)
 restart=$("$hmfnet" "${args[@]}" --replicas 2 --restart-each-K)
 across=$("$hmfnet" "${args[@]}" --replicas 2 --K-across-replicas)
 if "$hmfnet" "${args[@]}" --K-across-replicas --node-data 2> "$out/refusal.txt"; then
@@ -26,9 +28,13 @@ grep -q -- "--precision: float32 (allowed: only for the sparse force" "$out/refu
   || { echo "unexpected refusal: $(cat "$out/refusal.txt")"; exit 1; }
 test -s "$out/sim.h5" || { echo "no results file written"; exit 1; }
 ls "$out"/sim.h5.tmp.* 2>/dev/null && { echo "temporary left behind"; exit 1; }
-python3 - "$plain" "$resumed" "$single" "$restart" "$across" <<'PY'
+python3 - "$plain" "$resumed" "$single" "$restart" "$across" "$waterbag" <<'PY'
 import json, sys
-a, b, f, r, x = (json.loads(x) for x in sys.argv[1:6])
+a, b, f, r, x, w = (json.loads(x) for x in sys.argv[1:7])
+assert a["momenta"] == "gaussian" and w["momenta"] == "waterbag", (a["momenta"], w["momenta"])
+assert abs(w["Kc"] - 3 * a["Kc"]) <= 1e-12 * a["Kc"], (w["Kc"], a["Kc"])
+assert [p["R_mean"] for p in w["points"]] != [p["R_mean"] for p in a["points"]], "same momenta"
+assert all(p["energy_rel_error_max"] < 1e-2 for p in w["points"]), w["points"]
 assert r["points"] == x["points"], ("across replicas differs", r["points"], x["points"])
 assert 3 * x["steps"] == r["steps"], (x["steps"], r["steps"])
 assert a["force"] == "sparse" and f["force"] == "sparse-float32", (a["force"], f["force"])

@@ -157,7 +157,7 @@ inline const std::vector<std::string>& argument_tokens() {
       // options
       "--n", "--q", "--mean-degree", "--seed", "--alpha", "--dmin", "--cutoff", "--link",
       "--target-rho", "--max-attempts", "--json", "--sigma0", "--tolerance", "--K", "--K-over-Kc",
-      "--K-sweep", "--omega", "--h", "--T", "--transient", "--replicas", "--threads",
+      "--K-sweep", "--omega", "--momenta", "--h", "--T", "--transient", "--replicas", "--threads",
       "--checkpoint", "--resume", "--quiet", "--node-data", "--rotor-node", "--phase-bins",
       "--restart-each-K", "--K-across-replicas", "--record-stride", "--energy-tolerance", "--integrator", "--force",
       "--symmetrize", "--index-base", "--nodes",
@@ -167,7 +167,7 @@ inline const std::vector<std::string>& argument_tokens() {
       "1000", "1024", "1025", "1000000", "1000001", "2147483647", "2147483648", "1e308", "1e309",
       "18446744073709551615", "18446744073709551616", "-18446744073709551615", "0x10", " 1", "1 ",
       "1,2", "1,nan", ",", "1,,2", "0:10:1", "1:0:1", "0:1:0", "0:1:nan", "a:b:c", ":", "capped",
-      "poisson", "odds", "auto", "sparse", "rank-one", "leapfrog", "yoshida4", "blanes_moan", "rk4",
+      "poisson", "odds", "auto", "sparse", "rank-one", "leapfrog", "yoshida4", "blanes_moan", "rk4", "gaussian", "waterbag",
       "", "-", "true", "x",
       // appended (token-mode seeds index the entries above)
       "--precision", "float32", "float64"};

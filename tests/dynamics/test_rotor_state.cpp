@@ -1,0 +1,70 @@
+// The initial state: Gaussian or water-bag momenta with the stated mean and spread, seeded, and
+// the same whatever the split of the rows over ranks.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "dynamics/rotor_state.hpp"
+
+using namespace hmfnet;
+
+namespace {
+
+constexpr double kOmega = 6.0, kSigma0 = 0.35;
+
+InitialCondition waterbag(std::uint64_t seed) {
+  return {kOmega, kSigma0, seed, MomentumDistribution::waterbag};
+}
+
+}  // namespace
+
+TEST_CASE("Water-bag momenta: inside omega +- sqrt(3) sigma0, mean omega, sd sigma0",
+          "[rotor_state]") {
+  const NodeIndex n = 200000;
+  const RotorState s = initial_state(0, n, {waterbag(3)});
+  const double D = std::sqrt(3.0) * kSigma0;
+  double sum = 0.0, lo = INFINITY, hi = -INFINITY;
+  for (const double p : s.p) {
+    sum += p;
+    lo = std::min(lo, p);
+    hi = std::max(hi, p);
+  }
+  const double mean = sum / n;
+  double var = 0.0;
+  for (const double p : s.p) var += (p - mean) * (p - mean) / (n - 1);
+  REQUIRE(lo >= kOmega - D);
+  REQUIRE(hi < kOmega + D);
+  // Filled to the edges: the gap to each edge is of order D / N.
+  REQUIRE(lo < kOmega - D + 1e-3);
+  REQUIRE(hi > kOmega + D - 1e-3);
+  // Tolerances: 4 standard errors. Mean: sigma0 / sqrt(N). Sample variance of a uniform:
+  // sqrt((mu4 - sigma^4) / N) with mu4 = 9 sigma^4 / 5, i.e. sigma0^2 sqrt(0.8 / N).
+  REQUIRE(std::abs(mean - kOmega) < 4.0 * kSigma0 / std::sqrt(double(n)));
+  REQUIRE(std::abs(var - kSigma0 * kSigma0) < 4.0 * kSigma0 * kSigma0 * std::sqrt(0.8 / n));
+}
+
+TEST_CASE("Initial states are seeded and independent of the row split [both distributions]",
+          "[rotor_state]") {
+  const NodeIndex n = 1000, cut = 377;
+  for (const auto g : {MomentumDistribution::gaussian, MomentumDistribution::waterbag}) {
+    const InitialCondition a{kOmega, kSigma0, 11, g}, b{kOmega, kSigma0, 12, g};
+    const RotorState whole = initial_state(0, n, {a, b});
+    REQUIRE(initial_state(0, n, {a, b}).p == whole.p);
+    REQUIRE(initial_state(0, n, {b}).p != initial_state(0, n, {a}).p);
+    const RotorState first = initial_state(0, cut, {a, b});
+    const RotorState second = initial_state(cut, n - cut, {a, b});
+    std::vector<double> theta = first.theta, p = first.p;
+    theta.insert(theta.end(), second.theta.begin(), second.theta.end());
+    p.insert(p.end(), second.p.begin(), second.p.end());
+    REQUIRE(theta == whole.theta);
+    REQUIRE(p == whole.p);
+  }
+  // The phases do not depend on the momentum distribution (theta is drawn first).
+  REQUIRE(initial_state(0, n, {waterbag(5)}).theta ==
+          initial_state(0, n, {{kOmega, kSigma0, 5}}).theta);
+}
+
+TEST_CASE("A water-bag of zero width is refused naming sigma0", "[rotor_state]") {
+  REQUIRE_THROWS_WITH(initial_state(0, 10, {{kOmega, 0.0, 1, MomentumDistribution::waterbag}}),
+                      Catch::Contains("sigma0") && Catch::Contains("water-bag"));
+}
