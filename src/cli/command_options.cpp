@@ -108,6 +108,10 @@ void add_theory_options(CLI::App& app, TheoryFlags& f, const Run& run) {
   c->add_option("--sigma0", f.sigma0, "Standard deviation of the initial momenta")
       ->required()
       ->check(k_positive);
+  c->add_option("--momenta", f.momenta,
+                "Initial momenta: gaussian or waterbag; K_c and gamma are that distribution's "
+                "linear threshold and growth rate")
+      ->check(CLI::IsMember({"gaussian", "waterbag"}));
   auto* k = c->add_option("--K", f.K, "Couplings K (comma-separated list)")
                 ->delimiter(',')
                 ->check(k_positive);

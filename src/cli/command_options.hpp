@@ -56,6 +56,7 @@ struct SpectrumFlags {
 struct TheoryFlags {
   std::string input;
   double sigma0 = 0.0;
+  std::string momenta = "gaussian";
   std::vector<double> K;
   std::vector<double> K_over_Kc;
   bool json = false;

@@ -2,6 +2,13 @@
 // K_c (eq:criticalKFirstOrder), G (eq:globalOrderRInDeltaK), the growth rate gamma (eq:gammaKKc)
 // and the synchronized state R(K) (eq:rSigmaBesselMain) at each K, and the K -> infinity limit
 // R_hat (eq:KtoInfinity and its degree approximation eq:rd).
+//
+// Two thresholds: K_c, the linear (Vlasov) threshold of the incoherent start for the chosen
+// momentum distribution (theory/linear_stability.hpp), which --K-over-Kc multiplies and gamma
+// follows; and Kc_equilibrium = 2 sigma0^2 N / lambda, where eq:rSigmaBesselMain leaves R = 0 at
+// the incoherent start's energy (the equilibrium depends on g only through sigma0^2 and U0 = 0).
+// They coincide for Gaussian momenta; the water-bag's K_c is 3 Kc_equilibrium, and between the two
+// the incoherent start is linearly stable although the equilibrium is synchronised.
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -20,6 +27,7 @@
 #include "theory/critical_coupling.hpp"
 #include "theory/growth_rate.hpp"
 #include "theory/large_k_limit.hpp"
+#include "theory/linear_stability.hpp"
 #include "theory/onset_amplitude.hpp"
 #include "theory/self_consistent.hpp"
 
@@ -29,7 +37,9 @@ namespace {
 
 struct TheoryReport {
   double lambda = 0.0;
-  double Kc = 0.0;
+  MomentumDistribution momenta = MomentumDistribution::gaussian;
+  double Kc = 0.0;              ///< linear threshold of `momenta`
+  double Kc_equilibrium = 0.0;  ///< where eq:rSigmaBesselMain leaves R = 0
   double G = 0.0;
   double mean_degree = 0.0;
   std::vector<SelfConsistentSolution> points;
@@ -43,7 +53,9 @@ nlohmann::json to_json(const TheoryReport& t, const TheoryFlags& f, NodeIndex n)
   j["mean_degree"] = t.mean_degree;
   j["sigma0"] = f.sigma0;
   j["lambda"] = t.lambda;
+  j["momenta"] = name_of(t.momenta);
   j["Kc"] = t.Kc;
+  j["Kc_equilibrium"] = t.Kc_equilibrium;
   j["G"] = t.G;
   j["R_hat_iteration"] = t.large_k.R_hat;
   j["R_hat_iterations"] = t.large_k.iterations;
@@ -53,12 +65,15 @@ nlohmann::json to_json(const TheoryReport& t, const TheoryFlags& f, NodeIndex n)
   j["points"] = nlohmann::json::array();
   for (const auto& p : t.points) {
     const double kappa = p.K / t.Kc;
-    if (kappa > 1.0)
-      j["gamma"].push_back({{"K_over_Kc", kappa}, {"gamma", growth_rate(kappa, f.sigma0)}});
+    if (kappa > 1.0) {
+      j["gamma"].push_back(
+          {{"K_over_Kc", kappa}, {"gamma", growth_rate(t.momenta, kappa, f.sigma0)}});
+    }
     j["points"].push_back({{"K", p.K},
                            {"K_over_Kc", kappa},
+                           {"linearly_stable", kappa < 1.0},
                            {"R", p.R},
-                           {"R_onset", onset_order_parameter(t.G, kappa)},
+                           {"R_onset", onset_order_parameter(t.G, p.K / t.Kc_equilibrium)},
                            {"sigma2", p.sigma2},
                            {"status", solve_status_name(p.status)},
                            {"iterations", p.iterations},
@@ -69,7 +84,9 @@ nlohmann::json to_json(const TheoryReport& t, const TheoryFlags& f, NodeIndex n)
 
 void print_text(const TheoryReport& t, const TheoryFlags& f) {
   std::cout << std::setprecision(6) << "lambda             " << t.lambda << "\n"
-            << "K_c                " << t.Kc << " (sigma0 = " << f.sigma0 << ")\n"
+            << "K_c                " << t.Kc << " (linear threshold, " << name_of(t.momenta)
+            << " momenta, sigma0 = " << f.sigma0 << ")\n"
+            << "K_c equilibrium    " << t.Kc_equilibrium << " (eq:rSigmaBesselMain leaves R = 0)\n"
             << "G                  " << t.G << "\n"
             << "R_hat (K -> inf)   " << t.large_k.R_hat << " (eq:KtoInfinity, "
             << t.large_k.iterations << " iterations), " << t.R_hat_degree
@@ -81,8 +98,9 @@ void print_text(const TheoryReport& t, const TheoryFlags& f) {
   for (const auto& p : t.points) {
     const double kappa = p.K / t.Kc;
     std::cout << std::setw(12) << p.K << std::setw(10) << kappa << std::setw(12) << p.R
-              << std::setw(12) << onset_order_parameter(t.G, kappa) << std::setw(12) << p.sigma2
-              << std::setw(12) << (kappa > 1.0 ? growth_rate(kappa, f.sigma0) : 0.0) << std::setw(7)
+              << std::setw(12) << onset_order_parameter(t.G, p.K / t.Kc_equilibrium)
+              << std::setw(12) << p.sigma2 << std::setw(12)
+              << (kappa > 1.0 ? growth_rate(t.momenta, kappa, f.sigma0) : 0.0) << std::setw(7)
               << p.iterations << std::setw(12) << p.residual << "  " << solve_status_name(p.status)
               << "\n";
   }
@@ -113,7 +131,10 @@ void run(const TheoryFlags& f) {
   TheoryReport t;
   t.lambda = perron.lambda;
   t.mean_degree = mean_degree(net);
-  t.Kc = critical_coupling(f.sigma0, static_cast<double>(net.size()), perron.lambda);
+  t.momenta = parse_momentum_distribution(f.momenta, "--momenta");
+  const auto n = static_cast<double>(net.size());
+  t.Kc = critical_coupling(t.momenta, f.sigma0, n, perron.lambda);
+  t.Kc_equilibrium = critical_coupling(f.sigma0, n, perron.lambda);
   t.G = onset_amplitude(perron.lambda, t.mean_degree, perron.u);
   if (!perron.nonnegative) {
     std::cerr << f.input << ": warning: the eigenvector of lambda changes sign (A reducible): "
