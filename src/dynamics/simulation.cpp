@@ -266,12 +266,13 @@ void Run::guard(const std::vector<double>& K, const std::vector<double>& errors)
                                                       std::to_string(m_params.energy_tolerance)
                                                 : std::string("energy is NaN or infinite");
     char message[640];
-    std::snprintf(message, sizeof message,
-                  "K = %g, t = %g (replica %zu): %s; the step h = %g is likely too large for "
-                  "this K: %s is stable for h * omega_max < %.4g with omega_max = "
-                  "sqrt(K max_n R_n) = %.4g, i.e. h < %.4g",
-                  K[b], static_cast<double>(m_seg.step) * m_h, b, what.c_str(), m_h,
-                  m_integrator->name().c_str(), limit, omega, omega > 0 ? limit / omega : INFINITY);
+    std::snprintf(
+        message, sizeof message,
+        "K = %g, t = %g (replica %zu of this K): %s; the step h = %g is likely too large for "
+        "this K: %s is stable for h * omega_max < %.4g with omega_max = "
+        "sqrt(K max_n R_n) = %.4g, i.e. h < %.4g",
+        K[b], static_cast<double>(m_seg.step) * m_h, b % m_identity.replicas.size(), what.c_str(),
+        m_h, m_integrator->name().c_str(), limit, omega, omega > 0 ? limit / omega : INFINITY);
     throw SimulationBlowUp(message);
   }
 }

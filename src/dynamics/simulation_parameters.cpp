@@ -52,9 +52,9 @@ void validate_across(const SimulationParameters& p) {
     }
   }
   if (p.node_data) {
-    throw ParameterError("K across replicas", "with node_data",
-                         "no per-node statistics (they follow one replica per K: run the K "
-                         "values one after another)");
+    throw ParameterError("K across replicas (--K-across-replicas)", "with node_data (--node-data)",
+                         "no per-node statistics (they follow one replica per K): use "
+                         "--restart-each-K");
   }
   if (lanes(p) > 64) {
     throw ParameterError(

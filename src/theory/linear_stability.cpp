@@ -1,5 +1,6 @@
 #include "theory/linear_stability.hpp"
 
+#include <algorithm>
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/tools/toms748_solve.hpp>
@@ -50,7 +51,14 @@ namespace {
 // Integral of f over [0, b], b finite or infinite.
 template <typename F>
 double half_line(F f, double b) {
-  return boost::math::quadrature::gauss_kronrod<double, 61>::integrate(f, 0.0, b, 15, 1e-14);
+  double error = 0.0;
+  const double value =
+      boost::math::quadrature::gauss_kronrod<double, 61>::integrate(f, 0.0, b, 15, 1e-14, &error);
+  if (!(error <= 1e-11 * std::max(1.0, std::abs(value)))) {
+    throw ConvergenceError("eq:gDashPSGammaPlusOmega quadrature: error estimate " +
+                           std::to_string(error) + " for the value " + std::to_string(value));
+  }
+  return value;
 }
 
 // 2 * integral over x > 0 of m(x) x^2 / (gamma^2 + x^2), m = -g'/x on the smooth part. For gamma
@@ -83,17 +91,28 @@ double dispersion_integral(const EvenDensity& g, double gamma) {
   return J;
 }
 
+// J(0) > 0 for a density peaked at its centre (-x g'(x) >= 0), the case the header's
+// monotonicity and the root bracket rely on; anything else is refused, not answered.
+double positive_J0(const EvenDensity& g) {
+  const double J0 = dispersion_integral(g, 0.0);
+  if (!(J0 > 0.0) || !std::isfinite(J0)) {
+    throw ParameterError("momentum density", "J(0) = " + std::to_string(J0),
+                         "J(0) = int -g'(x)/x dx > 0 (a density peaked at its centre)");
+  }
+  return J0;
+}
+
 double linear_threshold(const EvenDensity& g, double n, double lambda) {
   if (!(n >= 1.0)) throw ParameterError("N", std::to_string(n), "N >= 1");
   if (!(lambda > 0.0) || !std::isfinite(lambda))
     throw ParameterError("lambda", std::to_string(lambda), "lambda > 0 (a network with edges)");
-  return 2.0 * n / (lambda * dispersion_integral(g, 0.0));
+  return 2.0 * n / (lambda * positive_J0(g));
 }
 
 double linear_growth_rate(const EvenDensity& g, double K_over_Kc) {
   require_supercritical(K_over_Kc);
   if (K_over_Kc == 1.0) return 0.0;
-  const double target = dispersion_integral(g, 0.0) / K_over_Kc;
+  const double target = positive_J0(g) / K_over_Kc;
   const auto f = [&](double gamma) { return dispersion_integral(g, gamma) - target; };
   // J(gamma) < 1 / gamma^2 bounds the root by sqrt(1 / target); widen until the sign changes.
   double hi = std::sqrt(1.0 / target);

@@ -19,7 +19,8 @@
 
 namespace hmfnet {
 
-/// An even density g(x), x = p - Omega, of unit mass.
+/// An even density g(x), x = p - Omega, of unit mass, peaked at its centre (-x g'(x) >= 0:
+/// the monotone J above; the threshold and growth rate refuse a density with J(0) <= 0).
 struct EvenDensity {
   /// -g'(x) / x on the smooth part, x > 0 (finite as x -> 0+ for a density smooth at 0).
   std::function<double(double)> minus_slope_over_x;

@@ -19,7 +19,7 @@ across=$("$hmfnet" "${args[@]}" --replicas 2 --K-across-replicas)
 if "$hmfnet" "${args[@]}" --K-across-replicas --node-data 2> "$out/refusal.txt"; then
   echo "--K-across-replicas --node-data was accepted"; exit 1
 fi
-grep -q "K across replicas: with node_data" "$out/refusal.txt" \
+grep -q "K across replicas (--K-across-replicas): with node_data (--node-data)" "$out/refusal.txt" \
   || { echo "unexpected refusal: $(cat "$out/refusal.txt")"; exit 1; }
 if "$hmfnet" "${args[@]}" --precision float32 --force rank-one 2> "$out/refusal.txt"; then
   echo "--precision float32 --force rank-one was accepted"; exit 1

@@ -157,9 +157,9 @@ inline const std::vector<std::string>& argument_tokens() {
       // options
       "--n", "--q", "--mean-degree", "--seed", "--alpha", "--dmin", "--cutoff", "--link",
       "--target-rho", "--max-attempts", "--json", "--sigma0", "--tolerance", "--K", "--K-over-Kc",
-      "--K-sweep", "--omega", "--momenta", "--h", "--T", "--transient", "--replicas", "--threads",
+      "--K-sweep", "--omega", "--h", "--T", "--transient", "--replicas", "--threads",
       "--checkpoint", "--resume", "--quiet", "--node-data", "--rotor-node", "--phase-bins",
-      "--restart-each-K", "--K-across-replicas", "--record-stride", "--energy-tolerance", "--integrator", "--force",
+      "--restart-each-K", "--record-stride", "--energy-tolerance", "--integrator", "--force",
       "--symmetrize", "--index-base", "--nodes",
       // values: inside, on and outside every stated range
       "nan", "-nan", "inf", "-inf", "-1", "0", "-0", "1e-300", "1e-16", "1e-15", "1e-14", "0.01",
@@ -167,10 +167,11 @@ inline const std::vector<std::string>& argument_tokens() {
       "1000", "1024", "1025", "1000000", "1000001", "2147483647", "2147483648", "1e308", "1e309",
       "18446744073709551615", "18446744073709551616", "-18446744073709551615", "0x10", " 1", "1 ",
       "1,2", "1,nan", ",", "1,,2", "0:10:1", "1:0:1", "0:1:0", "0:1:nan", "a:b:c", ":", "capped",
-      "poisson", "odds", "auto", "sparse", "rank-one", "leapfrog", "yoshida4", "blanes_moan", "rk4", "gaussian", "waterbag",
+      "poisson", "odds", "auto", "sparse", "rank-one", "leapfrog", "yoshida4", "blanes_moan", "rk4",
       "", "-", "true", "x",
       // appended (token-mode seeds index the entries above)
-      "--precision", "float32", "float64"};
+      "--precision", "float32", "float64", "--K-across-replicas", "--momenta", "gaussian",
+      "waterbag"};
   return tokens;
 }
 

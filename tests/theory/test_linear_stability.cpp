@@ -73,3 +73,12 @@ TEST_CASE("Any even g: a Gaussian / water-bag mixture is the mixture of their J"
   REQUIRE(dispersion_integral(mix, gamma) ==
           Approx(dispersion_integral(mix, 0.0) / kappa).epsilon(1e-12));
 }
+
+TEST_CASE("A density with J(0) <= 0 is refused naming the reason", "[theory]") {
+  EvenDensity hollow;  // mass at the edges only, growing outward: -g'(x)/x < 0
+  hollow.minus_slope_over_x = [](double) { return 0.0; };
+  hollow.support = 1.0;
+  hollow.jumps = {{1.0, 0.5}};
+  REQUIRE_THROWS_WITH(linear_threshold(hollow, 100, 10), Catch::Contains("J(0)"));
+  REQUIRE_THROWS_WITH(linear_growth_rate(hollow, 2.0), Catch::Contains("peaked at its centre"));
+}
