@@ -21,21 +21,10 @@ std::string short_number(double x) {
 }
 }  // namespace
 
-NetworkSummary summarise(const Network& network, const PerronResult& perron, double sigma0) {
-  NetworkSummary s;
-  s.n = network.size();
-  s.edges = network.edges();
-  s.nnz = network.nnz();
-  s.self_loops = network.self_loops();
-  s.weighted = network.weighted();
-  const auto d = network.degrees();
-  s.mean_degree = mean_degree(network);
-  s.max_degree = *std::max_element(d.begin(), d.end());
-  s.rho = degree_correlation(network);
-  const Components c = connected_components(network);
-  s.components = c.count;
-  s.largest_component = c.largest;
-  s.bipartite = is_bipartite(network);
+namespace {
+
+// lambda, its residual and gap, G and K_c from a Perron pair (s.n and s.mean_degree set first).
+void add_spectrum(NetworkSummary& s, const PerronResult& perron, double sigma0) {
   s.lambda = perron.lambda;
   s.lambda_residual = perron.residual;
   s.perron_nonnegative = perron.nonnegative;
@@ -50,6 +39,9 @@ NetworkSummary summarise(const Network& network, const PerronResult& perron, dou
     s.sigma0 = sigma0;
     s.Kc = critical_coupling(sigma0, s.n, s.lambda);
   }
+}
+
+void add_warnings(NetworkSummary& s) {
   if (s.components > 1) {
     s.warnings.push_back(std::to_string(s.components) +
                          " connected components: A is reducible, the Perron-Frobenius assumption "
@@ -71,6 +63,44 @@ NetworkSummary summarise(const Network& network, const PerronResult& perron, dou
   if (!s.perron_nonnegative) {
     s.warnings.push_back("the eigenvector of lambda changes sign: lambda is degenerate");
   }
+}
+
+}  // namespace
+
+NetworkSummary summarise(const Network& network, const PerronResult& perron, double sigma0) {
+  NetworkSummary s;
+  s.n = network.size();
+  s.edges = network.edges();
+  s.nnz = network.nnz();
+  s.self_loops = network.self_loops();
+  s.weighted = network.weighted();
+  const auto d = network.degrees();
+  s.mean_degree = mean_degree(network);
+  s.max_degree = *std::max_element(d.begin(), d.end());
+  s.rho = degree_correlation(network);
+  const Components c = connected_components(network);
+  s.components = c.count;
+  s.largest_component = c.largest;
+  s.bipartite = is_bipartite(network);
+  add_spectrum(s, perron, sigma0);
+  add_warnings(s);
+  return s;
+}
+
+NetworkSummary summarise(const CompleteGraph& graph, const PerronResult& perron, double sigma0) {
+  NetworkSummary s;
+  s.n = graph.n;
+  s.edges = graph.edges();
+  s.nnz = graph.nnz();
+  s.self_loops = graph.self_loops ? graph.n : 0;
+  s.mean_degree = graph.degree();
+  s.max_degree = graph.degree();
+  s.rho = 1.0;  // eq:rhodef on a regular graph: <d d>_e / (<d>_e <d>_e) = d^2 / d^2
+  s.components = 1;
+  s.largest_component = graph.n;
+  s.bipartite = graph.bipartite();
+  add_spectrum(s, perron, sigma0);
+  add_warnings(s);
   return s;
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "network/complete_graph.hpp"
 #include "network/network.hpp"
 #include "spectral/perron.hpp"
 
@@ -50,6 +51,10 @@ constexpr double k_near_degenerate_ratio = 1.1;
 
 /// Combines the structural facts with a Perron pair computed on the same network.
 NetworkSummary summarise(const Network& network, const PerronResult& perron, double sigma0 = 0.0);
+
+/// The same from K_N's closed forms (rho = 1, one component), with its exact Perron pair.
+NetworkSummary summarise(const CompleteGraph& graph, const PerronResult& perron,
+                         double sigma0 = 0.0);
 
 /// One JSON object (the CLI's `spectrum --json` output).
 std::string to_json(const NetworkSummary& summary);

@@ -25,9 +25,9 @@ void ReadFlags::add_to(CLI::App* command) {
       ->check(k_non_negative);
 }
 
-void add_generate_options(CLI::App& app, ErFlags& er, SfFlags& sf, const Run& run_er,
-                          const Run& run_sf) {
-  auto* gen = app.add_subcommand("generate", "Generate a random network (er | sf)");
+void add_generate_options(CLI::App& app, ErFlags& er, SfFlags& sf, CompleteFlags& complete,
+                          const Run& run_er, const Run& run_sf, const Run& run_complete) {
+  auto* gen = app.add_subcommand("generate", "Generate a network (er | sf | complete)");
   gen->require_subcommand(1);
 
   auto* e = gen->add_subcommand("er", "Erdos-Renyi G(N, q): each pair linked with probability q");
@@ -71,6 +71,15 @@ void add_generate_options(CLI::App& app, ErFlags& er, SfFlags& sf, const Run& ru
     }
     run_sf();
   });
+
+  auto* c = gen->add_subcommand(
+      "complete", "The complete graph K_N (all-to-all HMF), stored in O(1) space (.h5 only)");
+  c->add_option("--n", complete.n, "Number of nodes")
+      ->required()
+      ->check(CLI::Range(std::int64_t{2}, std::int64_t{2147483647}));
+  c->add_flag("--self-loops", complete.self_loops, "Also A_nn = 1 (A = 1 1^T, lambda = N)");
+  c->add_option("-o,--output", complete.output, "Output file (.h5)")->required();
+  c->callback(run_complete);
 }
 
 void add_rewire_options(CLI::App& app, RewireFlags& f, const Run& run) {

@@ -25,6 +25,12 @@ struct ErFlags {
   std::string output;
 };
 
+struct CompleteFlags {
+  std::int64_t n = 0;
+  bool self_loops = false;
+  std::string output;
+};
+
 struct SfFlags {
   int n = 0;
   double alpha = 0.0;
@@ -94,8 +100,8 @@ struct DemoFlags {
 /// The top-level app: version flag, one subcommand required, one-line errors.
 void configure_app(CLI::App& app);
 
-void add_generate_options(CLI::App& app, ErFlags& er, SfFlags& sf, const Run& run_er,
-                          const Run& run_sf);
+void add_generate_options(CLI::App& app, ErFlags& er, SfFlags& sf, CompleteFlags& complete,
+                          const Run& run_er, const Run& run_sf, const Run& run_complete);
 void add_rewire_options(CLI::App& app, RewireFlags& f, const Run& run);
 void add_spectrum_options(CLI::App& app, SpectrumFlags& f, const Run& run);
 void add_theory_options(CLI::App& app, TheoryFlags& f, const Run& run);

@@ -1,4 +1,5 @@
-// `hmfnet generate er|sf`: the paper's two network families (Sec. numericalExperiments).
+// `hmfnet generate er|sf|complete`: the paper's two network families (Sec. numericalExperiments)
+// and its all-to-all limit K_N, stored in O(1) space.
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -63,13 +64,28 @@ void run_sf(const SfFlags& f) {
   report(net, f.output, seconds);
 }
 
+void run_complete(const CompleteFlags& f) {
+  const CompleteGraph graph = CompleteGraph::make(f.n, f.self_loops);
+  require_complete_graph_format(f.output);
+  require_writable_destination(f.output);
+  if (is_root()) {
+    write_complete_graph(
+        f.output, graph,
+        provenance("generate complete", {{"n", f.n}, {"self_loops", f.self_loops}}));
+    std::cerr << "wrote " << f.output << ": the complete graph, N = " << graph.n
+              << ", edges = " << graph.edges() << " (stored implicitly)\n";
+  }
+}
+
 }  // namespace
 
 void add_generate_command(CLI::App& app) {
   static ErFlags er;
   static SfFlags sf;
+  static CompleteFlags complete;
   add_generate_options(
-      app, er, sf, [] { run_er(er); }, [] { run_sf(sf); });
+      app, er, sf, complete, [] { run_er(er); }, [] { run_sf(sf); },
+      [] { run_complete(complete); });
 }
 
 }  // namespace hmfnet::cli

@@ -8,17 +8,32 @@
 
 namespace hmfnet::cli {
 
+namespace {
+void print_warnings(const std::vector<std::string>& warnings) {
+  if (!is_root()) return;
+  for (const auto& w : warnings) std::cerr << w << '\n';
+}
+}  // namespace
+
 // ReadFlags::add_to is part of the grammar: cli/command_options.cpp.
+ReadOptions ReadFlags::options() const {
+  ReadOptions o;
+  o.asymmetry = symmetrize ? AsymmetryPolicy::symmetrize : AsymmetryPolicy::reject;
+  o.edge_list_base = index_base;
+  o.edge_list_nodes = nodes;
+  return o;
+}
+
 Network ReadFlags::read(const std::string& path) const {
-  ReadOptions options;
-  options.asymmetry = symmetrize ? AsymmetryPolicy::symmetrize : AsymmetryPolicy::reject;
-  options.edge_list_base = index_base;
-  options.edge_list_nodes = nodes;
-  ReadResult r = read_network(path, options);
-  if (is_root()) {
-    for (const auto& w : r.warnings) std::cerr << w << '\n';
-  }
+  ReadResult r = read_network(path, options());
+  print_warnings(r.warnings);
   return std::move(r.network);
+}
+
+NetworkInput ReadFlags::read_input(const std::string& path) const {
+  NetworkInput r = read_network_input(path, options());
+  print_warnings(r.warnings);
+  return r;
 }
 
 }  // namespace hmfnet::cli

@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "io/network_file.hpp"
 #include "io/read_options.hpp"
 
 namespace hmfnet::cli {
@@ -14,7 +15,13 @@ struct ReadFlags {
   int nodes = 0;
 
   void add_to(CLI::App* command);
+  /// The stored rows (an implicit structure is refused, naming the file).
   Network read(const std::string& path) const;
+  /// Stored rows or the complete graph held implicitly (spectrum, theory, simulate).
+  NetworkInput read_input(const std::string& path) const;
+
+ private:
+  ReadOptions options() const;
 };
 
 }  // namespace hmfnet::cli

@@ -57,8 +57,32 @@ std::vector<double> parse_sweep(const std::string& text) {
   return K;
 }
 
-std::unique_ptr<CouplingForce> choose_force(const SimulateFlags& f, const Network& net,
+// K_N held implicitly has no rows for the sparse kernel: the O(N) rank-one force with a = 1
+// (without the diagonal unless it has self-loops) is its only force, exact in float64.
+std::unique_ptr<CouplingForce> complete_graph_force(const SimulateFlags& f,
+                                                    const CompleteGraph& graph,
+                                                    const DistributedNetwork& distributed) {
+  if (f.force == "sparse") {
+    throw ParameterError("--force", "sparse on the complete graph stored implicitly",
+                         "auto or rank-one (K_N has no stored rows)");
+  }
+  if (parse_force_precision(f.precision) == ForcePrecision::float32) {
+    throw ParameterError("--precision", "float32 on the complete graph stored implicitly",
+                         "float64 (its rank-one force)");
+  }
+  RankOneStructure structure;
+  structure.a.assign(static_cast<std::size_t>(graph.n), 1.0);
+  structure.diagonal = graph.self_loops;
+  return std::make_unique<RankOneForce>(std::move(structure), distributed.first_row(),
+                                        distributed.local_size());
+}
+
+std::unique_ptr<CouplingForce> choose_force(const SimulateFlags& f, const NetworkInput& input,
                                             const DistributedNetwork& distributed) {
+  if (const auto* complete = input.complete()) {
+    return complete_graph_force(f, *complete, distributed);
+  }
+  const Network& net = input.stored();
   const ForcePrecision precision = parse_force_precision(f.precision);
   if (precision == ForcePrecision::float32 && f.force == "rank-one") {
     throw ParameterError("--precision", "float32",
@@ -142,23 +166,32 @@ void run(const SimulateFlags& f) {
   if (!f.output.empty()) require_writable_destination(f.output);
   if (!f.checkpoint.empty()) require_writable_destination(f.checkpoint);
   make_integrator(f.integrator);  // unknown names fail here, before any work
-  const Network net = f.read.read(f.input);
-  const DistributedNetwork distributed(net);
-  const PerronResult perron = perron_eigenpair(distributed);
+  const NetworkInput input = f.read.read_input(f.input);
+  const auto* complete = input.complete();
+  const auto distributed = complete != nullptr
+                               ? std::make_unique<DistributedNetwork>(*complete)
+                               : std::make_unique<DistributedNetwork>(input.stored());
+  const PerronResult perron =
+      complete != nullptr ? perron_eigenpair(*complete) : perron_eigenpair(*distributed);
+  const NodeIndex n = input.size();
+  const EdgeOffset nnz = distributed->global_nnz();
+  const EdgeOffset edges = complete != nullptr ? complete->edges() : input.stored().edges();
   const double Kc = critical_coupling(parse_momentum_distribution(f.momenta, "--momenta"), f.sigma0,
-                                      net.size(), perron.lambda);
+                                      n, perron.lambda);
   const SimulationParameters params = parameters(f, Kc);
   // Before any work: every output location must hold what the run will write (a checkpoint in
   // the same directory as the results counts against the same space).
-  const std::uintmax_t results_bytes =
-      f.output.empty() ? 0 : estimated_run_file_bytes(params, net.size());
+  const std::uintmax_t results_bytes = f.output.empty() ? 0 : estimated_run_file_bytes(params, n);
   const std::uintmax_t checkpoint_bytes =
-      f.checkpoint.empty() ? 0 : estimated_checkpoint_bytes(params, net.size());
+      f.checkpoint.empty() ? 0 : estimated_checkpoint_bytes(params, n);
   if (!f.output.empty()) require_free_space(f.output, results_bytes + checkpoint_bytes);
   if (!f.checkpoint.empty()) require_free_space(f.checkpoint, results_bytes + checkpoint_bytes);
-  auto force = choose_force(f, net, distributed);
+  auto force = choose_force(f, input, *distributed);
   install_interrupt_handlers();
-  const SimulationResult result = simulate(distributed, net.degrees(), *force, params);
+  const std::vector<double> degrees =
+      complete != nullptr ? std::vector<double>(static_cast<std::size_t>(n), complete->degree())
+                          : input.stored().degrees();
+  const SimulationResult result = simulate(*distributed, degrees, *force, params);
   if (result.interrupted) {
     const int signal = interrupt_signal();
     throw RunInterrupted(
@@ -171,8 +204,8 @@ void run(const SimulateFlags& f) {
   }
 
   nlohmann::json out;
-  out["n"] = net.size();
-  out["nnz"] = net.nnz();
+  out["n"] = n;
+  out["nnz"] = nnz;
   out["lambda"] = perron.lambda;
   out["Kc"] = Kc;
   out["momenta"] = f.momenta;
@@ -192,9 +225,9 @@ void run(const SimulateFlags& f) {
     meta.inputs_json =
         nlohmann::json{{"input", f.input}, {"force", f.force}, {"precision", f.precision}}.dump();
     meta.network_json = nlohmann::json{
-        {"n", net.size()},
-        {"nnz", net.nnz()},
-        {"edges", net.edges()},
+        {"n", n},
+        {"nnz", nnz},
+        {"edges", edges},
         {"lambda", perron.lambda},
         {"Kc", Kc}}.dump();
     nlohmann::json prov =
@@ -212,7 +245,7 @@ void run(const SimulateFlags& f) {
     std::cout << out.dump() << std::endl;
     return;
   }
-  std::cout << "N = " << net.size() << ", nnz = " << net.nnz() << ", lambda = " << perron.lambda
+  std::cout << "N = " << n << ", nnz = " << nnz << ", lambda = " << perron.lambda
             << ", K_c = " << Kc << " (" << result.force_name << " force, "
             << out["nnz_steps_per_second"].get<double>() / 1e9 << " Gnnz*steps/s)\n"
             << "       K    K/K_c     <R>_t       sem   max dE/E  P drift\n";

@@ -121,21 +121,57 @@ void require_converged(const TheoryReport& t) {
   }
 }
 
+// The network the solvers run on, and the numbers the report quotes. For K_N the solvers run on
+// its one-node quotient (network/complete_graph.hpp: the same map, the same r, sigma^2 and R at
+// every K, and the same K_c), so the theory costs O(1) at any N; the report quotes K_N's own N,
+// lambda and mean degree.
+struct TheoryNetwork {
+  const Network* stored = nullptr;  ///< the input's rows, or nullptr for K_N
+  Network quotient;                 ///< K_N's quotient
+  PerronResult solved_pair;         ///< of solved()
+  NodeIndex n = 0;                  ///< of the input
+  double lambda = 0.0;              ///< of the input
+  double mean_degree = 0.0;         ///< of the input
+
+  const Network& solved() const { return stored != nullptr ? *stored : quotient; }
+};
+
+TheoryNetwork theory_network(const NetworkInput& input) {
+  TheoryNetwork t;
+  if (const auto* complete = input.complete()) {
+    t.quotient = complete->quotient();
+    t.solved_pair.lambda = t.quotient.weights().front();  // a 1 x 1 matrix: its one entry
+    t.solved_pair.u = {1.0};
+    t.n = complete->n;
+    t.lambda = complete->lambda();
+    t.mean_degree = complete->degree();
+    return t;
+  }
+  t.stored = &input.stored();
+  const DistributedNetwork distributed(*t.stored);
+  t.solved_pair = perron_eigenpair(distributed);
+  t.n = t.stored->size();
+  t.lambda = t.solved_pair.lambda;
+  t.mean_degree = mean_degree(*t.stored);
+  return t;
+}
+
 void run(const TheoryFlags& f) {
   // Step 1: the network and its Perron pair (collective over MPI ranks).
-  const Network net = f.read.read(f.input);
-  const DistributedNetwork distributed(net);
-  const PerronResult perron = perron_eigenpair(distributed);
+  const NetworkInput input = f.read.read_input(f.input);
+  const TheoryNetwork net = theory_network(input);
+  const Network& solved = net.solved();
+  const PerronResult& perron = net.solved_pair;
   if (!is_root()) return;
   // Step 2: K_c, G, the couplings asked for.
   TheoryReport t;
-  t.lambda = perron.lambda;
-  t.mean_degree = mean_degree(net);
+  t.lambda = net.lambda;
+  t.mean_degree = net.mean_degree;
   t.momenta = parse_momentum_distribution(f.momenta, "--momenta");
-  const auto n = static_cast<double>(net.size());
-  t.Kc = critical_coupling(t.momenta, f.sigma0, n, perron.lambda);
-  t.Kc_equilibrium = critical_coupling(f.sigma0, n, perron.lambda);
-  t.G = onset_amplitude(perron.lambda, t.mean_degree, perron.u);
+  const auto n = static_cast<double>(net.n);
+  t.Kc = critical_coupling(t.momenta, f.sigma0, n, net.lambda);
+  t.Kc_equilibrium = critical_coupling(f.sigma0, n, net.lambda);
+  t.G = onset_amplitude(perron.lambda, mean_degree(solved), perron.u);
   if (!perron.nonnegative) {
     std::cerr << f.input << ": warning: the eigenvector of lambda changes sign (A reducible): "
               << "G and the first guesses assume a positive Perron vector\n";
@@ -143,14 +179,14 @@ void run(const TheoryFlags& f) {
   std::vector<double> Ks = f.K;
   for (const double kappa : f.K_over_Kc) Ks.push_back(kappa * t.Kc);
   // Step 3: the synchronized state along K (warm-started), and the K -> infinity limit.
-  const SelfConsistentSystem system(net, perron.lambda, f.sigma0, 0.0, perron.u);
+  const SelfConsistentSystem system(solved, perron.lambda, f.sigma0, 0.0, perron.u);
   SelfConsistentOptions options;
   options.tolerance = f.tolerance;
   t.points = system.sweep(Ks, options);
-  t.large_k = solve_large_k_limit(net, options);
-  t.R_hat_degree = degree_approximation_R_hat(net.degrees());
+  t.large_k = solve_large_k_limit(solved, options);
+  t.R_hat_degree = degree_approximation_R_hat(solved.degrees());
   if (f.json) {
-    std::cout << to_json(t, f, net.size()).dump() << std::endl;
+    std::cout << to_json(t, f, net.n).dump() << std::endl;
   } else {
     print_text(t, f);
   }

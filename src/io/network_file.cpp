@@ -36,6 +36,28 @@ ReadResult read_network(const std::string& path, const ReadOptions& options) {
   throw InputError(path, 0, "unreachable format");
 }
 
+NetworkInput read_network_input(const std::string& path, const ReadOptions& options) {
+  if (format_from_extension(path) == NetworkFormat::hdf5) {
+    if (auto graph = read_implicit_network_hdf5(path)) return {*graph, {}};
+  }
+  ReadResult r = read_network(path, options);
+  return {std::move(r.network), std::move(r.warnings)};
+}
+
+void require_complete_graph_format(const std::string& path) {
+  if (format_from_extension(path) != NetworkFormat::hdf5) {
+    throw InputError(path, 0,
+                     "the complete graph is stored implicitly only in hmfnet HDF5 (.h5): a text "
+                     "format would list N (N - 1) entries");
+  }
+}
+
+void write_complete_graph(const std::string& path, const CompleteGraph& graph,
+                          const std::string& provenance) {
+  require_complete_graph_format(path);
+  write_complete_graph_hdf5(path, graph, provenance);
+}
+
 void write_network(const std::string& path, const Network& network, const std::string& provenance) {
   switch (format_from_extension(path)) {
     case NetworkFormat::matrix_market:

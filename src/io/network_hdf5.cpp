@@ -10,20 +10,70 @@
 namespace hmfnet {
 
 namespace {
-constexpr std::int64_t k_format_version = 1;
-}
+// Version 1: the CSR arrays. Version 2: a structure stored implicitly (no arrays); CSR files are
+// still written as version 1, so every file an older hmfnet reads is still written the same way,
+// and an older hmfnet refuses an implicit file by its version instead of a missing dataset.
+constexpr std::int64_t k_csr_version = 1;
+constexpr std::int64_t k_implicit_version = 2;
 
-ReadResult read_network_hdf5(const std::string& path) {
-  const Hdf5File file(path, Hdf5File::Mode::read);
+// Checks the root attributes and returns the format version (1 or 2).
+std::int64_t network_format_version(const Hdf5File& file) {
   const hid_t root = file.id();
   if (!file.has_attribute(root, "hmfnet_format") ||
       file.string_attribute(root, "hmfnet_format") != "network") {
     file.fail("not an hmfnet network file (attribute hmfnet_format != \"network\")");
   }
   const std::int64_t version = file.int_attribute(root, "format_version");
-  if (version != k_format_version) {
+  if (version != k_csr_version && version != k_implicit_version) {
     file.fail("network format version " + std::to_string(version) + " is not supported (" +
-              std::to_string(k_format_version) + ")");
+              std::to_string(k_csr_version) + " or " + std::to_string(k_implicit_version) + ")");
+  }
+  return version;
+}
+
+void write_root_attributes(const Hdf5File& file, std::int64_t format_version,
+                           const std::string& provenance) {
+  const hid_t root = file.id();
+  file.set_attribute(root, "hmfnet_format", std::string("network"));
+  file.set_attribute(root, "format_version", format_version);
+  file.set_attribute(root, "hmfnet_version", std::string(version()));
+  file.set_attribute(root, "git_commit", std::string(git_commit()));
+  file.set_attribute(root, "provenance", provenance);
+}
+
+CompleteGraph read_complete_graph(const Hdf5File& file) {
+  const H5Id group = file.open_group("network");
+  const std::string structure = file.string_attribute(group.get(), "structure");
+  if (structure != "complete") {
+    file.fail("/network: structure \"" + structure + "\" is not known (complete)");
+  }
+  const std::int64_t n = file.int_attribute(group.get(), "n");
+  const std::int64_t loops = file.int_attribute(group.get(), "self_loops_all");
+  if (loops != 0 && loops != 1) {
+    file.fail("/network: self_loops_all = " + std::to_string(loops) + " (allowed: 0 or 1)");
+  }
+  try {
+    return CompleteGraph::make(n, loops == 1);
+  } catch (const ParameterError& e) {
+    file.fail(std::string("/network: ") + e.what());
+  }
+}
+
+}  // namespace
+
+std::optional<CompleteGraph> read_implicit_network_hdf5(const std::string& path) {
+  const Hdf5File file(path, Hdf5File::Mode::read);
+  if (network_format_version(file) != k_implicit_version) return std::nullopt;
+  return read_complete_graph(file);
+}
+
+ReadResult read_network_hdf5(const std::string& path) {
+  const Hdf5File file(path, Hdf5File::Mode::read);
+  if (network_format_version(file) == k_implicit_version) {
+    const CompleteGraph graph = read_complete_graph(file);
+    file.fail("the complete graph of " + std::to_string(graph.n) +
+              " nodes is stored implicitly, not as rows: this needs stored rows (hmfnet "
+              "spectrum, theory and simulate read it; in the library, read_network_input)");
   }
   const H5Id group = file.open_group("network");
   const std::int64_t n = file.int_attribute(group.get(), "n");
@@ -59,12 +109,7 @@ void write_network_hdf5(const std::string& path, const Network& network,
   AtomicFile out(path);
   {
     const Hdf5File file(out.temp_path(), Hdf5File::Mode::create);
-    const hid_t root = file.id();
-    file.set_attribute(root, "hmfnet_format", std::string("network"));
-    file.set_attribute(root, "format_version", k_format_version);
-    file.set_attribute(root, "hmfnet_version", std::string(version()));
-    file.set_attribute(root, "git_commit", std::string(git_commit()));
-    file.set_attribute(root, "provenance", provenance);
+    write_root_attributes(file, k_csr_version, provenance);
     const H5Id group = file.create_group("network");
     file.set_attribute(group.get(), "n", static_cast<std::int64_t>(network.size()));
     file.set_attribute(group.get(), "nnz", static_cast<std::int64_t>(network.nnz()));
@@ -74,6 +119,31 @@ void write_network_hdf5(const std::string& path, const Network& network,
     file.write(group.get(), "row_ptr", network.row_ptr());
     file.write(group.get(), "col", network.cols());
     if (network.weighted()) file.write(group.get(), "weights", network.weights());
+    file.flush();
+  }
+  out.commit();
+}
+
+}  // namespace hmfnet
+
+namespace hmfnet {
+
+void write_complete_graph_hdf5(const std::string& path, const CompleteGraph& graph,
+                               const std::string& provenance) {
+  AtomicFile out(path);
+  {
+    const Hdf5File file(out.temp_path(), Hdf5File::Mode::create);
+    write_root_attributes(file, k_implicit_version, provenance);
+    const H5Id group = file.create_group("network");
+    file.set_attribute(group.get(), "structure", std::string("complete"));
+    file.set_attribute(group.get(), "n", static_cast<std::int64_t>(graph.n));
+    file.set_attribute(group.get(), "self_loops_all", static_cast<std::int64_t>(graph.self_loops));
+    // The summary attributes of a CSR file, for tools that read only attributes.
+    file.set_attribute(group.get(), "nnz", static_cast<std::int64_t>(graph.nnz()));
+    file.set_attribute(group.get(), "edges", static_cast<std::int64_t>(graph.edges()));
+    file.set_attribute(group.get(), "self_loops",
+                       static_cast<std::int64_t>(graph.self_loops ? graph.n : 0));
+    file.set_attribute(group.get(), "weighted", std::int64_t{0});
     file.flush();
   }
   out.commit();

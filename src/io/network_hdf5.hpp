@@ -8,13 +8,28 @@
 //   /network/weights float64[nnz] only when weighted
 // The reader checks every invariant of Network (so a corrupted file is refused, naming the
 // dataset and the violation).
+//
+// A structure stored implicitly (format_version = 2, no datasets):
+//   /network         attributes  structure = "complete", n, self_loops_all (0/1), and the
+//                                summary attributes nnz, edges, self_loops, weighted = 0
+#include <optional>
 #include <string>
 
 #include "io/read_options.hpp"
+#include "network/complete_graph.hpp"
 
 namespace hmfnet {
 
+/// The CSR network; a file with an implicit structure is refused (InputError naming it).
 ReadResult read_network_hdf5(const std::string& path);
+
+/// The complete graph a format-2 file holds, or nullopt for a CSR file (read_network_hdf5 reads
+/// it). Refuses, naming the file, an unknown structure and N or self_loops_all out of range.
+std::optional<CompleteGraph> read_implicit_network_hdf5(const std::string& path);
+
+/// K_N in O(1) space (format_version 2), written to a temporary and renamed.
+void write_complete_graph_hdf5(const std::string& path, const CompleteGraph& graph,
+                               const std::string& provenance = "{}");
 
 /// `provenance` is JSON text (generator, parameters, seed, command line).
 void write_network_hdf5(const std::string& path, const Network& network,

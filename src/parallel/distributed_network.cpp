@@ -5,11 +5,21 @@
 #include <algorithm>
 #include <utility>
 
+#include "core/error.hpp"
 #include "parallel/distributed_network_impl.hpp"
 
 namespace hmfnet {
 
 namespace {
+
+const TpetraMatrix& stored_matrix(const DistributedNetwork::Impl& impl, const char* what) {
+  if (impl.matrix.is_null()) {
+    throw ParameterError(what, "the complete graph, held without stored rows",
+                         "a network with stored rows (K_N: the rank-one force and the closed "
+                         "forms of network/complete_graph.hpp)");
+  }
+  return *impl.matrix;
+}
 
 Teuchos::RCP<TpetraMatrix> assemble(const Network& net, const Teuchos::RCP<const TpetraMap>& map) {
   const auto local_rows = map->getNodeNumElements();
@@ -51,6 +61,13 @@ DistributedNetwork::DistributedNetwork(const Network& network) : m_impl(std::mak
   m_impl->weighted = network.weighted();
 }
 
+DistributedNetwork::DistributedNetwork(const CompleteGraph& graph)
+    : m_impl(std::make_unique<Impl>()) {
+  auto comm = Tpetra::getDefaultComm();
+  m_impl->map = Teuchos::rcp(new TpetraMap(static_cast<Tpetra::global_size_t>(graph.n), 0, comm));
+  m_impl->implicit_nnz = graph.nnz();
+}
+
 DistributedNetwork::~DistributedNetwork() = default;
 
 const DistributedNetwork::Impl& tpetra_impl(const DistributedNetwork& network) {
@@ -70,8 +87,11 @@ NodeIndex DistributedNetwork::first_row() const {
 }
 
 EdgeOffset DistributedNetwork::global_nnz() const {
+  if (m_impl->matrix.is_null()) return m_impl->implicit_nnz;
   return static_cast<EdgeOffset>(m_impl->matrix->getGlobalNumEntries());
 }
+
+bool DistributedNetwork::stores_rows() const { return !m_impl->matrix.is_null(); }
 
 void DistributedNetwork::apply(const std::vector<double>& x_local,
                                std::vector<double>& y_local) const {
@@ -80,7 +100,7 @@ void DistributedNetwork::apply(const std::vector<double>& x_local,
     auto xv = x.getDataNonConst(0);
     std::copy(x_local.begin(), x_local.begin() + local_size(), xv.begin());
   }
-  m_impl->matrix->apply(x, y);
+  stored_matrix(*m_impl, "DistributedNetwork::apply").apply(x, y);
   const auto yv = y.getData(0);
   y_local.assign(yv.begin(), yv.end());
 }
@@ -101,7 +121,7 @@ std::vector<double> DistributedNetwork::gather(const std::vector<double>& x_loca
 namespace hmfnet {
 
 DistributedNetwork::LocalAdjacency DistributedNetwork::local_adjacency() const {
-  const auto& matrix = *m_impl->matrix;
+  const auto& matrix = stored_matrix(*m_impl, "DistributedNetwork::local_adjacency");
   const auto col_map = matrix.getColMap();
   LocalAdjacency a;
   a.columns = static_cast<NodeIndex>(col_map->getNodeNumElements());
@@ -129,11 +149,13 @@ DistributedNetwork::LocalAdjacency DistributedNetwork::local_adjacency() const {
 }
 
 bool DistributedNetwork::columns_are_owned_rows() const {
-  return m_impl->matrix->getColMap()->isSameAs(*m_impl->map);
+  return stored_matrix(*m_impl, "DistributedNetwork::columns_are_owned_rows")
+      .getColMap()
+      ->isSameAs(*m_impl->map);
 }
 
 void DistributedNetwork::import_columns(const double* owned, int width, double* columns) const {
-  const auto col_map = m_impl->matrix->getColMap();
+  const auto col_map = stored_matrix(*m_impl, "DistributedNetwork::import_columns").getColMap();
   if (m_impl->row_to_columns.is_null()) {
     m_impl->row_to_columns = Teuchos::rcp(new TpetraImport(m_impl->map, col_map));
   }

@@ -5,9 +5,13 @@
 //
 // Every rank holds the same replicated Network (generators are deterministic, readers read the
 // same file) and inserts only the rows it owns; the matrix stores values as double.
+// The complete graph is held implicitly: only the row blocks (the Map), no matrix; what needs
+// stored rows (apply, local_adjacency, import_columns, the eigensolver) refuses it, and its
+// callers use the closed forms of network/complete_graph.hpp and the rank-one force instead.
 #include <memory>
 #include <vector>
 
+#include "network/complete_graph.hpp"
 #include "network/network.hpp"
 
 namespace hmfnet {
@@ -16,6 +20,8 @@ class DistributedNetwork {
  public:
   /// Needs a live ParallelSession. Collective: every rank calls it with the same network.
   explicit DistributedNetwork(const Network& network);
+  /// The row blocks of K_N over the ranks, and no stored rows. Collective.
+  explicit DistributedNetwork(const CompleteGraph& graph);
   ~DistributedNetwork();
   DistributedNetwork(const DistributedNetwork&) = delete;
   DistributedNetwork& operator=(const DistributedNetwork&) = delete;
@@ -24,8 +30,10 @@ class DistributedNetwork {
   /// Rows owned here: global indices [first_row(), first_row() + local_size()).
   NodeIndex local_size() const;
   NodeIndex first_row() const;
-  /// Stored entries over all ranks.
+  /// Stored entries over all ranks (for the complete graph, those it stands for).
   EdgeOffset global_nnz() const;
+  /// False for a structure held implicitly (the complete graph): no matrix behind it.
+  bool stores_rows() const;
 
   /// y = A x on the rows owned here; x and y hold this rank's entries (local_size() each).
   /// Collective (ghost values of x travel through the matrix's Import).

@@ -21,7 +21,8 @@ using TpetraImport = Tpetra::Import<>;
 
 struct DistributedNetwork::Impl {
   Teuchos::RCP<const TpetraMap> map;
-  Teuchos::RCP<TpetraMatrix> matrix;
+  Teuchos::RCP<TpetraMatrix> matrix;  ///< null for the complete graph held implicitly
+  EdgeOffset implicit_nnz = 0;        ///< the complete graph's n (n - 1) [+ n]
   bool weighted = false;
   Teuchos::RCP<const TpetraImport> row_to_columns;  // built on first import_columns
   // Reused across steps (allocated again only when the width changes).

@@ -88,3 +88,33 @@ TEST_CASE("Near-degenerate lambda of two weakly linked communities is detected a
   CHECK_FALSE(mentions(mixed.warnings, "near-degenerate lambda"));
   CHECK(mixed.warnings.empty());
 }
+
+TEST_CASE("K_N's closed-form summary equals the stored graph's, field by field [N = 300]",
+          "[summary][complete]") {
+  using Catch::Matchers::WithinAbs;
+  using Catch::Matchers::WithinRel;
+  for (const bool loops : {false, true}) {
+    const CompleteGraph graph = CompleteGraph::make(300, loops);
+    const NetworkSummary a = summarise(graph, perron_eigenpair(graph), 0.35);
+    const NetworkSummary b = summary_of(graph.materialise(), 0.35);
+    INFO("self-loops " << loops);
+    CHECK(a.n == b.n);
+    CHECK(a.edges == b.edges);
+    CHECK(a.nnz == b.nnz);
+    CHECK(a.self_loops == b.self_loops);
+    CHECK(a.weighted == b.weighted);
+    CHECK(a.mean_degree == b.mean_degree);
+    CHECK(a.max_degree == b.max_degree);
+    CHECK_THAT(a.rho, WithinRel(b.rho, 1e-12));
+    CHECK(a.components == b.components);
+    CHECK(a.largest_component == b.largest_component);
+    CHECK(a.bipartite == b.bipartite);
+    // Anasazi's residual tolerance is 1e-10 relative; its lambda lands within 1e-12 here.
+    CHECK_THAT(a.lambda, WithinRel(b.lambda, 1e-12));
+    CHECK_THAT(a.G, WithinRel(b.G, 1e-12));
+    CHECK_THAT(a.Kc, WithinRel(b.Kc, 1e-12));
+    CHECK(a.warnings == b.warnings);
+    // lambda_2 = 0 has multiplicity N - 1 with self-loops: Anasazi may report no second pair.
+    if (std::isfinite(b.lambda2)) CHECK_THAT(a.lambda2, WithinAbs(b.lambda2, 1e-9 * b.lambda));
+  }
+}

@@ -62,6 +62,11 @@ inline void check_sf(const cli::SfFlags& f, const std::string& line) {
   c.require(f.cutoff > 0.0, "--cutoff not > 0");
 }
 
+inline void check_complete(const cli::CompleteFlags& f, const std::string& line) {
+  const RangeChecks c(line);
+  c.require(f.n >= 2 && f.n <= 2147483647, "--n outside 2..2^31-1");
+}
+
 inline void check_simulate(const cli::SimulateFlags& f, const std::string& line) {
   const RangeChecks c(line);
   c.positive(f.sigma0, "--sigma0 not > 0");
@@ -101,6 +106,7 @@ inline bool parse_command_line(std::vector<std::string> args) {
   for (const auto& a : args) line += " " + a;
   cli::ErFlags er;
   cli::SfFlags sf;
+  cli::CompleteFlags complete;
   cli::RewireFlags rewire;
   cli::SpectrumFlags spectrum;
   cli::TheoryFlags theory;
@@ -110,8 +116,9 @@ inline bool parse_command_line(std::vector<std::string> args) {
   CLI::App app{"hmfnet (fuzzed grammar)"};
   cli::configure_app(app);
   cli::add_generate_options(
-      app, er, sf, [&] { check_er(er, line), reached = true; },
-      [&] { check_sf(sf, line), reached = true; });
+      app, er, sf, complete, [&] { check_er(er, line), reached = true; },
+      [&] { check_sf(sf, line), reached = true; },
+      [&] { check_complete(complete, line), reached = true; });
   cli::add_rewire_options(app, rewire, [&] {
     const RangeChecks c(line);
     c.positive(rewire.target_rho, "--target-rho not > 0");

@@ -88,6 +88,15 @@ inline int read_file(Reader reader, const std::string& path) {
       break;
     case Reader::network_hdf5:
       attempt([&] { return read_network_hdf5(path); });
+      // The implicit structure (format 2): an accepted complete graph must be in range.
+      try {
+        if (const auto graph = read_implicit_network_hdf5(path)) {
+          if (graph->n < 2) invariant_failed(path, "complete graph with N < 2 accepted");
+          ++accepted;
+        }
+      } catch (const InputError&) {
+        // The expected refusal of malformed input.
+      }
       // A handle left open on any path (error or not) keeps the file open inside HDF5, which
       // would hand the next open of the same name the stale file.
       if (H5Fget_obj_count(static_cast<hid_t>(H5F_OBJ_ALL), H5F_OBJ_ALL) != 0) {

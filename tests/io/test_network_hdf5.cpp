@@ -147,11 +147,18 @@ TEST_CASE(
     const auto e = input_error_from([&] { read_network_hdf5(path); });
     require_input_error(e, path, 0, "not an hmfnet network file");
   }
-  SECTION("format version 2") {
+  SECTION("format version 7") {
+    const std::string path = valid_file(dir);
+    set_int_attribute(path, "/", "format_version", 7);
+    const auto e = input_error_from([&] { read_network_hdf5(path); });
+    require_input_error(e, path, 0, "network format version 7 is not supported (1 or 2)");
+  }
+  SECTION("a CSR file marked as format 2 (implicit) without a structure") {
     const std::string path = valid_file(dir);
     set_int_attribute(path, "/", "format_version", 2);
     const auto e = input_error_from([&] { read_network_hdf5(path); });
-    require_input_error(e, path, 0, "network format version 2 is not supported");
+    REQUIRE(e.has_value());
+    CHECK_THAT(e->cause(), Contains("structure"));
   }
 }
 
@@ -371,4 +378,74 @@ TEST_CASE(
   const auto e = input_error_from([&] { read_network_hdf5(path); });
   require_input_error(e, path, 0,
                       "dataset col declares 1099511627776 values but stores only 0 bytes");
+}
+
+TEST_CASE("HDF5 complete graph round trip holds N and the loops in O(1) [N = 10^6]",
+          "[io][hdf5][complete]") {
+  TempDirectory dir;
+  for (const bool loops : {false, true}) {
+    const CompleteGraph graph = CompleteGraph::make(1000000, loops);
+    write_complete_graph_hdf5(dir.file("k.h5"), graph, R"({"generator": "test"})");
+    const auto back = read_implicit_network_hdf5(dir.file("k.h5"));
+    REQUIRE(back.has_value());
+    CHECK(back->n == graph.n);
+    CHECK(back->self_loops == loops);
+    const Hdf5File file(dir.file("k.h5"), Hdf5File::Mode::read);
+    CHECK(file.int_attribute(file.id(), "format_version") == 2);
+    const H5Id group = file.open_group("network");
+    CHECK(file.int_attribute(group.get(), "nnz") == graph.nnz());
+    CHECK(file.int_attribute(group.get(), "edges") == graph.edges());
+    CHECK_FALSE(file.exists("network/col"));
+  }
+  CHECK(dir.listing() == std::vector<std::string>{"k.h5"});
+  // A CSR file is not implicit: the caller reads its rows.
+  CHECK_FALSE(read_implicit_network_hdf5(valid_file(dir)).has_value());
+}
+
+TEST_CASE("HDF5 reader of rows refuses the complete graph stored implicitly, naming it",
+          "[io][hdf5][complete]") {
+  TempDirectory dir;
+  write_complete_graph_hdf5(dir.file("k.h5"), CompleteGraph::make(50, false));
+  const auto e = input_error_from([&] { read_network_hdf5(dir.file("k.h5")); });
+  require_input_error(e, dir.file("k.h5"), 0,
+                      "the complete graph of 50 nodes is stored implicitly, not as rows");
+}
+
+TEST_CASE("HDF5 complete graph reader refuses N and loops out of range [corrupted attributes]",
+          "[io][hdf5][complete]") {
+  TempDirectory dir;
+  const std::string path = dir.file("k.h5");
+  const std::vector<std::pair<std::string, std::int64_t>> corruptions = {
+      {"n", 1}, {"n", -5}, {"n", std::int64_t{1} << 31}, {"self_loops_all", 2}};
+  const std::vector<std::string> causes = {"/network: --n: complete graph with 1 nodes",
+                                           "/network: --n: complete graph with -5 nodes",
+                                           "/network: --n: complete graph with 2147483648 nodes",
+                                           "/network: self_loops_all = 2 (allowed: 0 or 1)"};
+  for (std::size_t k = 0; k < corruptions.size(); ++k) {
+    write_complete_graph_hdf5(path, CompleteGraph::make(50, false));
+    set_int_attribute(path, "network", corruptions[k].first, corruptions[k].second);
+    INFO(corruptions[k].first << " = " << corruptions[k].second);
+    require_input_error(input_error_from([&] { read_implicit_network_hdf5(path); }), path, 0,
+                        causes[k]);
+  }
+}
+
+TEST_CASE("HDF5 network reader refuses an unknown implicit structure and format version",
+          "[io][hdf5][complete]") {
+  TempDirectory dir;
+  const std::string path = dir.file("ring.h5");
+  {
+    const Hdf5File file(path, Hdf5File::Mode::create);
+    file.set_attribute(file.id(), "hmfnet_format", std::string("network"));
+    file.set_attribute(file.id(), "format_version", std::int64_t{2});
+    const H5Id group = file.create_group("network");
+    file.set_attribute(group.get(), "structure", std::string("ring"));
+    file.set_attribute(group.get(), "n", std::int64_t{10});
+  }
+  require_input_error(input_error_from([&] { read_implicit_network_hdf5(path); }), path, 0,
+                      "/network: structure \"ring\" is not known (complete)");
+  write_complete_graph_hdf5(path, CompleteGraph::make(50, false));
+  set_int_attribute(path, "/", "format_version", 3);
+  require_input_error(input_error_from([&] { read_implicit_network_hdf5(path); }), path, 0,
+                      "network format version 3 is not supported (1 or 2)");
 }

@@ -2,6 +2,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "core/error.hpp"
+#include "network/complete_graph.hpp"
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
 #include "parallel/parallel_session.hpp"
@@ -41,4 +43,24 @@ TEST_CASE("Gather assembles each rank's block exactly", "[distributed]") {
   for (std::size_t r = 0; r < mine.size(); ++r) mine[r] = double(d.first_row()) + double(r) + 0.25;
   const auto all = d.gather(mine);
   for (std::size_t i = 0; i < all.size(); ++i) REQUIRE(all[i] == double(i) + 0.25);
+}
+
+TEST_CASE("K_N held implicitly has the stored graph's row blocks and no stored rows [N = 301]",
+          "[distributed][complete]") {
+  for (const bool loops : {false, true}) {
+    const CompleteGraph graph = CompleteGraph::make(301, loops);
+    const DistributedNetwork implicit(graph);
+    const DistributedNetwork stored(graph.materialise());
+    INFO("ranks " << ParallelSession::ranks() << ", self-loops " << loops);
+    CHECK_FALSE(implicit.stores_rows());
+    CHECK(stored.stores_rows());
+    CHECK(implicit.global_size() == stored.global_size());
+    CHECK(implicit.first_row() == stored.first_row());
+    CHECK(implicit.local_size() == stored.local_size());
+    CHECK(implicit.global_nnz() == stored.global_nnz());
+    std::vector<double> x(static_cast<std::size_t>(implicit.local_size()), 1.0), y;
+    CHECK_THROWS_WITH(implicit.apply(x, y), Catch::Matchers::Contains("held without stored rows"));
+    CHECK_THROWS_AS(implicit.local_adjacency(), ParameterError);
+    CHECK(implicit.gather(x).size() == 301);
+  }
 }
