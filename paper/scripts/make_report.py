@@ -71,6 +71,11 @@ SECTIONS = [
      "The theory assumes a simple Perron eigenvalue and many neighbours per rotor. Are networks "
      "that violate this flagged, and how far is the simulation from the theory on them?",
      ["theory_breaking_networks"], ["theory_breaking_networks"]),
+    ("Beyond the paper: the Antoni-Ruffo caloric curve on the complete graph",
+     "Not a claim of the paper: its all-to-all limit is the HMF of Antoni & Ruffo (1995), whose "
+     "microcanonical runs relax to the canonical M = I1(M/T)/I0(M/T), U = T/2 + (1 - M^2)/2, "
+     "U_c = 3/4 (eq:rSigmaBesselMain on K_N). The complete graph is stored in O(1) "
+     "(`hmfnet generate complete`).", ["all_to_all_caloric_curve"], ["caloric_curve"]),
     ("Conservation laws",
      "H and the total momentum are conserved (eq:hamiltonianNetworkCase); the symplectic "
      "leap-frog's energy error stays bounded.", ["conservation"], []),

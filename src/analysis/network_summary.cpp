@@ -29,7 +29,8 @@ void add_spectrum(NetworkSummary& s, const PerronResult& perron, double sigma0) 
   s.lambda_residual = perron.residual;
   s.perron_nonnegative = perron.nonnegative;
   s.lambda2 = perron.lambda2;
-  s.second_mode_ratio = perron.lambda / perron.lambda2;
+  // lambda_2 = 0 (K_N with self-loops, a star's middle eigenvalue): no finite ratio to report.
+  if (perron.lambda2 != 0.0) s.second_mode_ratio = perron.lambda / perron.lambda2;
   if (perron.lambda2 < perron.lambda)  // false for NaN and for a degenerate lambda (no gap)
     s.eigenvector_error_bound = perron.residual * perron.lambda / (perron.lambda - perron.lambda2);
   s.eigen_iterations = perron.iterations;
@@ -87,7 +88,7 @@ NetworkSummary summarise(const Network& network, const PerronResult& perron, dou
   return s;
 }
 
-NetworkSummary summarise(const CompleteGraph& graph, const PerronResult& perron, double sigma0) {
+NetworkSummary summarise(const CompleteGraph& graph, double sigma0) {
   NetworkSummary s;
   s.n = graph.n;
   s.edges = graph.edges();
@@ -99,6 +100,12 @@ NetworkSummary summarise(const CompleteGraph& graph, const PerronResult& perron,
   s.components = 1;
   s.largest_component = graph.n;
   s.bipartite = graph.bipartite();
+  // The exact pair; eq:globalOrderRInDeltaK uses u only through node averages of its powers, so
+  // one entry of the uniform vector stands for all N.
+  PerronResult perron;
+  perron.lambda = graph.lambda();
+  perron.lambda2 = graph.lambda2();
+  perron.u = {1.0};
   add_spectrum(s, perron, sigma0);
   add_warnings(s);
   return s;
@@ -123,7 +130,7 @@ std::string to_json(const NetworkSummary& s) {
   j["perron_nonnegative"] = s.perron_nonnegative;
   if (std::isfinite(s.lambda2)) {
     j["lambda2"] = s.lambda2;
-    j["second_mode_ratio"] = s.second_mode_ratio;
+    if (std::isfinite(s.second_mode_ratio)) j["second_mode_ratio"] = s.second_mode_ratio;
     if (std::isfinite(s.eigenvector_error_bound))
       j["eigenvector_error_bound"] = s.eigenvector_error_bound;
   }

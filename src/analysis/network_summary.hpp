@@ -52,9 +52,10 @@ constexpr double k_near_degenerate_ratio = 1.1;
 /// Combines the structural facts with a Perron pair computed on the same network.
 NetworkSummary summarise(const Network& network, const PerronResult& perron, double sigma0 = 0.0);
 
-/// The same from K_N's closed forms (rho = 1, one component), with its exact Perron pair.
-NetworkSummary summarise(const CompleteGraph& graph, const PerronResult& perron,
-                         double sigma0 = 0.0);
+/// The same from K_N's closed forms, in O(1) at any N: rho = 1, one component, lambda and
+/// lambda_2 exact (residual 0), G from the uniform Perron vector (sqrt(2/5), as every regular
+/// graph's).
+NetworkSummary summarise(const CompleteGraph& graph, double sigma0 = 0.0);
 
 /// One JSON object (the CLI's `spectrum --json` output).
 std::string to_json(const NetworkSummary& summary);

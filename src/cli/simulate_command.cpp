@@ -171,13 +171,13 @@ void run(const SimulateFlags& f) {
   const auto distributed = complete != nullptr
                                ? std::make_unique<DistributedNetwork>(*complete)
                                : std::make_unique<DistributedNetwork>(input.stored());
-  const PerronResult perron =
-      complete != nullptr ? perron_eigenpair(*complete) : perron_eigenpair(*distributed);
+  const double lambda =
+      complete != nullptr ? complete->lambda() : perron_eigenpair(*distributed).lambda;
   const NodeIndex n = input.size();
   const EdgeOffset nnz = distributed->global_nnz();
   const EdgeOffset edges = complete != nullptr ? complete->edges() : input.stored().edges();
-  const double Kc = critical_coupling(parse_momentum_distribution(f.momenta, "--momenta"), f.sigma0,
-                                      n, perron.lambda);
+  const double Kc =
+      critical_coupling(parse_momentum_distribution(f.momenta, "--momenta"), f.sigma0, n, lambda);
   const SimulationParameters params = parameters(f, Kc);
   // Before any work: every output location must hold what the run will write (a checkpoint in
   // the same directory as the results counts against the same space).
@@ -206,7 +206,7 @@ void run(const SimulateFlags& f) {
   nlohmann::json out;
   out["n"] = n;
   out["nnz"] = nnz;
-  out["lambda"] = perron.lambda;
+  out["lambda"] = lambda;
   out["Kc"] = Kc;
   out["momenta"] = f.momenta;
   out["force"] = result.force_name;
@@ -224,12 +224,9 @@ void run(const SimulateFlags& f) {
     RunMetadata meta;
     meta.inputs_json =
         nlohmann::json{{"input", f.input}, {"force", f.force}, {"precision", f.precision}}.dump();
-    meta.network_json = nlohmann::json{
-        {"n", n},
-        {"nnz", nnz},
-        {"edges", edges},
-        {"lambda", perron.lambda},
-        {"Kc", Kc}}.dump();
+    meta.network_json =
+        nlohmann::json{{"n", n}, {"nnz", nnz}, {"edges", edges}, {"lambda", lambda}, {"Kc", Kc}}
+            .dump();
     nlohmann::json prov =
         nlohmann::json::parse(provenance("simulate", run_parameters(params, meta.inputs_json)));
     prov["ranks"] = ParallelSession::ranks();
@@ -245,8 +242,8 @@ void run(const SimulateFlags& f) {
     std::cout << out.dump() << std::endl;
     return;
   }
-  std::cout << "N = " << n << ", nnz = " << nnz << ", lambda = " << perron.lambda
-            << ", K_c = " << Kc << " (" << result.force_name << " force, "
+  std::cout << "N = " << n << ", nnz = " << nnz << ", lambda = " << lambda << ", K_c = " << Kc
+            << " (" << result.force_name << " force, "
             << out["nnz_steps_per_second"].get<double>() / 1e9 << " Gnnz*steps/s)\n"
             << "       K    K/K_c     <R>_t       sem   max dE/E  P drift\n";
   for (const auto& p : out["points"]) {

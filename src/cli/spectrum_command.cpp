@@ -27,9 +27,12 @@ void print_text(const NetworkSummary& s) {
     // Few distinct eigenvalues (a star has three) defeat Krylov-Schur for a second pair.
     std::cout << "lambda_2           not found (no second eigenpair passed its residual check)\n";
   } else {
-    std::cout << "lambda_2           " << s.lambda2
-              << " (lambda / lambda_2 = " << s.second_mode_ratio
-              << ", Perron vector error <= " << s.eigenvector_error_bound << ")\n";
+    std::cout << "lambda_2           " << s.lambda2;
+    if (std::isfinite(s.second_mode_ratio))
+      std::cout << " (lambda / lambda_2 = " << s.second_mode_ratio << ",";
+    else
+      std::cout << " (";
+    std::cout << " Perron vector error <= " << s.eigenvector_error_bound << ")\n";
   }
   std::cout << "components         " << s.components << " (largest " << s.largest_component << ")\n"
             << "bipartite          " << (s.bipartite ? "yes" : "no") << "\n";
@@ -40,7 +43,7 @@ void print_text(const NetworkSummary& s) {
 NetworkSummary summary(const SpectrumFlags& f, const NetworkInput& input) {
   // K_N: every number has a closed form (network/complete_graph.hpp), no solve.
   if (const auto* complete = input.complete()) {
-    return summarise(*complete, perron_eigenpair(*complete), f.sigma0);
+    return summarise(*complete, f.sigma0);
   }
   const DistributedNetwork distributed(input.stored());
   PerronOptions options;

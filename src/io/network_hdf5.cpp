@@ -48,15 +48,31 @@ CompleteGraph read_complete_graph(const Hdf5File& file) {
     file.fail("/network: structure \"" + structure + "\" is not known (complete)");
   }
   const std::int64_t n = file.int_attribute(group.get(), "n");
+  if (n < 2 || n > std::numeric_limits<NodeIndex>::max()) {
+    file.fail("/network: n = " + std::to_string(n) + " (allowed: 2 <= n <= " +
+              std::to_string(std::numeric_limits<NodeIndex>::max()) + ")");
+  }
   const std::int64_t loops = file.int_attribute(group.get(), "self_loops_all");
   if (loops != 0 && loops != 1) {
     file.fail("/network: self_loops_all = " + std::to_string(loops) + " (allowed: 0 or 1)");
   }
-  try {
-    return CompleteGraph::make(n, loops == 1);
-  } catch (const ParameterError& e) {
-    file.fail(std::string("/network: ") + e.what());
+  const CompleteGraph graph = CompleteGraph::make(n, loops == 1);
+  // The summary attributes are what tools that read only attributes see: they must agree.
+  const std::pair<const char*, std::int64_t> summary[] = {
+      {"nnz", graph.nnz()},
+      {"edges", graph.edges()},
+      {"self_loops", graph.self_loops ? graph.n : 0},
+      {"weighted", 0}};
+  for (const auto& [name, expected] : summary) {
+    const std::int64_t stored = file.int_attribute(group.get(), name);
+    if (stored != expected) {
+      file.fail(std::string("/network: ") + name + " = " + std::to_string(stored) +
+                " disagrees with the complete graph of n = " + std::to_string(n) +
+                (graph.self_loops ? " with" : " without") + " self-loops (" +
+                std::to_string(expected) + ")");
+    }
   }
+  return graph;
 }
 
 }  // namespace

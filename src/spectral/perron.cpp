@@ -136,18 +136,10 @@ Teuchos::ParameterList common_parameters(const PerronOptions& options) {
 
 }  // namespace
 
-PerronResult perron_eigenpair(const CompleteGraph& graph) {
-  PerronResult r;
-  r.lambda = graph.lambda();
-  r.u.assign(static_cast<std::size_t>(graph.n), 1.0 / std::sqrt(static_cast<double>(graph.n)));
-  r.lambda2 = graph.lambda2();
-  return r;
-}
-
 PerronResult perron_eigenpair(const DistributedNetwork& network, const PerronOptions& options) {
   if (!network.stores_rows()) {
     throw ParameterError("spectrum: network", "the complete graph, held without stored rows",
-                         "a network with stored rows (K_N: perron_eigenpair(CompleteGraph))");
+                         "a network with stored rows (K_N: the closed forms of CompleteGraph)");
   }
   if (network.global_nnz() == 0) {
     throw ParameterError("spectrum: network", "no edges", "a network with edges");

@@ -38,8 +38,4 @@ struct PerronResult {
 /// unconverged pair), ParameterError for a network without edges.
 PerronResult perron_eigenpair(const DistributedNetwork& network, const PerronOptions& options = {});
 
-/// The exact pair of K_N: lambda = N - 1 (N with self-loops), u = 1 / sqrt(N), residual 0, and
-/// lambda_2 = -1 (0). Not collective (no solve).
-PerronResult perron_eigenpair(const CompleteGraph& graph);
-
 }  // namespace hmfnet

@@ -39,6 +39,8 @@ for key in ("n", "edges", "nnz", "self_loops", "components", "bipartite", "mean_
 assert si["lambda"] == 299.0 and rel(si["lambda"], ss["lambda"]) <= 1e-12, (si["lambda"], ss["lambda"])
 assert rel(si["G"], ss["G"]) <= 1e-12 and rel(si["rho"], ss["rho"]) <= 1e-12
 assert ti["lambda"] == 299.0 and rel(ti["Kc"], ts["Kc"]) <= 1e-12
+assert len(ti["points"]) == len(ts["points"]) == 4
+assert len(mi["points"]) == len(ms["points"]) == len(mp["points"]) == 2
 for a, b in zip(ti["points"], ts["points"]):
     assert a["status"] == b["status"], (a, b)
     if b["status"] == "converged":
@@ -71,6 +73,18 @@ p = m["points"][0]
 assert 0 < p["R_mean"] < 0.01 and p["energy_rel_error_max"] < 1e-10, p
 print("K_10^6: %d-byte file, lambda %g, theory R(2 K_c) %.6f, 30 steps <R> %.2e"
       % (int(sys.argv[4]), s["lambda"], t["points"][0]["R"], p["R_mean"]))
+PY
+
+# The largest N: spectrum and theory stay O(1) (no vector of N entries anywhere).
+"$hmfnet" generate complete --n 2147483647 -o "$out/kmax.h5" 2>/dev/null
+python3 - "$("$hmfnet" spectrum "$out/kmax.h5" --json)" \
+  "$("$hmfnet" theory "$out/kmax.h5" --sigma0 0.35 --K-over-Kc 3 --json)" <<'PY'
+import json, sys
+s, t = (json.loads(x) for x in sys.argv[1:3])
+assert s["n"] == 2**31 - 1 and s["lambda"] == 2**31 - 2 and s["nnz"] == (2**31 - 1) * (2**31 - 2)
+assert "second_mode_ratio" in s and s["lambda2"] == -1.0
+assert t["points"][0]["status"] == "converged"
+print("K_(2^31-1): spectrum and theory in O(1)")
 PY
 
 # Refusals: no rows for the sparse kernel, float32 or rewiring; nothing written.

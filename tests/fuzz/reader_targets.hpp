@@ -88,10 +88,16 @@ inline int read_file(Reader reader, const std::string& path) {
       break;
     case Reader::network_hdf5:
       attempt([&] { return read_network_hdf5(path); });
-      // The implicit structure (format 2): an accepted complete graph must be in range.
+      // The implicit structure (format 2): a file is rows or a complete graph, never both.
       try {
-        if (const auto graph = read_implicit_network_hdf5(path)) {
-          if (graph->n < 2) invariant_failed(path, "complete graph with N < 2 accepted");
+        if (read_implicit_network_hdf5(path)) {
+          bool also_rows = true;
+          try {
+            read_network_hdf5(path);
+          } catch (const InputError&) {
+            also_rows = false;
+          }
+          if (also_rows) invariant_failed(path, "read both as a complete graph and as rows");
           ++accepted;
         }
       } catch (const InputError&) {

@@ -411,16 +411,25 @@ TEST_CASE("HDF5 reader of rows refuses the complete graph stored implicitly, nam
                       "the complete graph of 50 nodes is stored implicitly, not as rows");
 }
 
-TEST_CASE("HDF5 complete graph reader refuses N and loops out of range [corrupted attributes]",
-          "[io][hdf5][complete]") {
+TEST_CASE(
+    "HDF5 complete graph reader refuses N, loops and summaries that disagree [corrupted "
+    "attributes]",
+    "[io][hdf5][complete]") {
   TempDirectory dir;
   const std::string path = dir.file("k.h5");
   const std::vector<std::pair<std::string, std::int64_t>> corruptions = {
-      {"n", 1}, {"n", -5}, {"n", std::int64_t{1} << 31}, {"self_loops_all", 2}};
-  const std::vector<std::string> causes = {"/network: --n: complete graph with 1 nodes",
-                                           "/network: --n: complete graph with -5 nodes",
-                                           "/network: --n: complete graph with 2147483648 nodes",
-                                           "/network: self_loops_all = 2 (allowed: 0 or 1)"};
+      {"n", 1},          {"n", -5},    {"n", std::int64_t{1} << 31}, {"self_loops_all", 2},
+      {"nnz", 2450 + 1}, {"edges", 7}, {"self_loops", 50},           {"weighted", 1}};
+  const std::vector<std::string> causes = {
+      "/network: n = 1 (allowed: 2 <= n <= 2147483647)",
+      "/network: n = -5 (allowed: 2 <= n <= 2147483647)",
+      "/network: n = 2147483648 (allowed: 2 <= n <= 2147483647)",
+      "/network: self_loops_all = 2 (allowed: 0 or 1)",
+      "/network: nnz = 2451 disagrees with the complete graph of n = 50 without self-loops (2450)",
+      "/network: edges = 7 disagrees with the complete graph of n = 50 without self-loops (1225)",
+      "/network: self_loops = 50 disagrees with the complete graph of n = 50 without self-loops "
+      "(0)",
+      "/network: weighted = 1 disagrees with the complete graph of n = 50 without self-loops (0)"};
   for (std::size_t k = 0; k < corruptions.size(); ++k) {
     write_complete_graph_hdf5(path, CompleteGraph::make(50, false));
     set_int_attribute(path, "network", corruptions[k].first, corruptions[k].second);
