@@ -28,10 +28,11 @@ void print_text(const NetworkSummary& s) {
     std::cout << "lambda_2           not found (no second eigenpair passed its residual check)\n";
   } else {
     std::cout << "lambda_2           " << s.lambda2;
-    if (std::isfinite(s.second_mode_ratio))
+    if (std::isfinite(s.second_mode_ratio)) {
       std::cout << " (lambda / lambda_2 = " << s.second_mode_ratio << ",";
-    else
+    } else {
       std::cout << " (";
+    }
     std::cout << " Perron vector error <= " << s.eigenvector_error_bound << ")\n";
   }
   std::cout << "components         " << s.components << " (largest " << s.largest_component << ")\n"
