@@ -45,6 +45,7 @@
 #include "parallel/parallel_session.hpp"
 #include "spectral/perron.hpp"
 #include "support/claim_check.hpp"
+#include "support/growth_fit.hpp"
 #include "support/sample_statistics.hpp"
 #include "support/work_account.hpp"
 #include "theory/critical_coupling.hpp"
@@ -52,68 +53,14 @@
 
 using namespace hmfnet;
 using verification::ClaimCheck;
+using verification::Fit;
+using verification::fit_growth;
+using verification::sample_growth_rate;
 
 namespace {
 
 constexpr double kSigma0 = 0.35;
 constexpr double kOmega = 6.0;
-
-struct Fit {
-  double slope = 0.0, intercept = 0.0, t1 = 0.0, t2 = 0.0;
-  double efolds = 0.0;  ///< gamma (t2 - t1): e-folds of the theory's growth inside the window
-  bool usable = false;
-};
-
-// Least squares of log R on records [a, b].
-Fit least_squares(const std::vector<double>& t, const std::vector<double>& R, std::size_t a,
-                  std::size_t b) {
-  double st = 0, sy = 0, stt = 0, sty = 0;
-  const double m = static_cast<double>(b - a + 1);
-  for (std::size_t i = a; i <= b; ++i) {
-    const double y = std::log(R[i]);
-    st += t[i];
-    sy += y;
-    stt += t[i] * t[i];
-    sty += t[i] * y;
-  }
-  Fit f;
-  f.slope = (m * sty - st * sy) / (m * stt - st * st);
-  f.intercept = (sy - f.slope * st) / m;
-  f.t1 = t[a];
-  f.t2 = t[b];
-  return f;
-}
-
-// The stated window rule of the header: log of the excess over the finite-size floor, from the
-// excess reaching the floor to R reaching half its saturated level.
-Fit fit_growth(const std::vector<double>& t, const std::vector<double>& R, double gamma) {
-  const std::size_t n = R.size(), tail = n - (3 * n) / 10;
-  double sat = 0.0;
-  for (std::size_t i = tail; i < n; ++i) sat += R[i] / static_cast<double>(n - tail);
-  const double floor = R[0];
-  std::vector<double> excess(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    excess[i] = std::sqrt(std::max(R[i] * R[i] - floor * floor, 1e-6 * floor * floor));
-  }
-  std::size_t begin = 0, end = 0;
-  while (begin < n && excess[begin] < floor) ++begin;
-  while (end < n && R[end] < 0.5 * sat) ++end;
-  Fit f;
-  if (end > begin + 2) {
-    f = least_squares(t, excess, begin, end - 1);
-    f.usable = true;
-  }
-  f.efolds = f.usable ? gamma * (f.t2 - f.t1) : 0.0;
-  return f;
-}
-
-// gamma of eq:lambdaHat for replica b's own initial momenta.
-double sample_growth_rate(NodeIndex n, double K, double lambda, const InitialCondition& ic,
-                          double gamma_guess) {
-  const RotorState s = initial_state(0, n, {ic});
-  const DispersionRoot root = solve_independent_dispersion(K, lambda, s.p, {gamma_guess, kOmega});
-  return root.converged ? root.s.real() : NAN;
-}
 
 struct KResult {
   double gamma = 0.0, gamma_sample = 0.0, slope = 0.0, slope_sem = 0.0, rel_error = 0.0;

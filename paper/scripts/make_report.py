@@ -76,6 +76,11 @@ SECTIONS = [
      "microcanonical runs relax to the canonical M = I1(M/T)/I0(M/T), U = T/2 + (1 - M^2)/2, "
      "U_c = 3/4 (eq:rSigmaBesselMain on K_N). The complete graph is stored in O(1) "
      "(`hmfnet generate complete`).", ["all_to_all_caloric_curve"], ["caloric_curve"]),
+    ("Beyond the paper: water-bag momenta, threshold and growth",
+     "Not a claim of the paper: eq:gDashPSGammaPlusOmega for water-bag momenta (uniform on "
+     "Omega +- sqrt(3) sigma0) gives the threshold K_c^wb = 6 sigma0^2 N / lambda (three times "
+     "the Gaussian's; Delta_c = 1/sqrt 2 in Antoni-Ruffo units) and gamma = sqrt(K lambda / 2N - "
+     "D^2).", ["waterbag_threshold"], ["waterbag_threshold"]),
     ("Conservation laws",
      "H and the total momentum are conserved (eq:hamiltonianNetworkCase); the symplectic "
      "leap-frog's energy error stays bounded.", ["conservation"], []),
