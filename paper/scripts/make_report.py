@@ -81,6 +81,10 @@ SECTIONS = [
      "Omega +- sqrt(3) sigma0) gives the threshold K_c^wb = 6 sigma0^2 N / lambda (three times "
      "the Gaussian's; Delta_c = 1/sqrt 2 in Antoni-Ruffo units) and gamma = sqrt(K lambda / 2N - "
      "D^2).", ["waterbag_threshold"], ["waterbag_threshold"]),
+    ("Beyond the paper: the quasi-stationary state's life on the complete graph",
+     "Not a claim of the paper: Yamaguchi, Barre, Bouchet, Dauxois & Ruffo (Physica A 337, 2004) "
+     "find that the homogeneous water-bag at U = 0.69 stays quasi-stationary for a time ~ N^1.7 "
+     "before relaxing to the synchronised equilibrium.", ["qss_lifetime"], ["qss_lifetime"]),
     ("Conservation laws",
      "H and the total momentum are conserved (eq:hamiltonianNetworkCase); the symplectic "
      "leap-frog's energy error stays bounded.", ["conservation"], []),
