@@ -26,11 +26,15 @@ def main():
     n = lives["N"]
     axes[1].errorbar(n, lives["life"], yerr=lives["life se"], fmt="o", capsize=3, color="C3",
                      label="life (half-way passage)")
+    fit = r.table("exponent")
+    slope, slope_se = fit["exponent"], fit["exponent se"]
+    # The driver's weighted fit, drawn through the weighted mean point of ln N, ln life.
     w = (lives["life"] / lives["life se"]) ** 2
-    slope, icpt = np.polyfit(np.log(n), np.log(lives["life"]), 1, w=np.sqrt(w))
+    x0 = np.sum(w * np.log(n)) / np.sum(w)
+    y0 = np.sum(w * np.log(lives["life"])) / np.sum(w)
     grid = np.geomspace(n.min() * 0.8, n.max() * 1.25, 20)
-    axes[1].plot(grid, np.exp(icpt) * grid ** slope, "-", color="C3", lw=1,
-                 label=f"fit: N^{slope:.2f}")
+    axes[1].plot(grid, np.exp(y0 + slope * (np.log(grid) - x0)), "-", color="C3", lw=1,
+                 label=f"fit: N^({slope:.2f} +- {slope_se:.2f})")
     mid = len(n) // 2
     axes[1].plot(grid, lives["life"][mid] * (grid / n[mid]) ** 1.7, "--", color="k", lw=1,
                  label="N^1.7 (Yamaguchi et al.)")

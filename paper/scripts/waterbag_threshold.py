@@ -31,10 +31,7 @@ def main():
     axes[0].set_xticklabels(labels, fontsize=7, rotation=30, ha="right")
     axes[0].set(ylabel="ratio of late R", title="threshold (x: network, momenta, K / K_c^wb)")
     axes[0].legend(fontsize=7)
-    kappa = np.linspace(1.0, 4.2, 100)
-    sigma0 = 0.35
-    D = np.sqrt(3) * sigma0
-    axes[1].plot(kappa, D * np.sqrt(kappa - 1), "-", color="k", lw=1,
+    axes[1].plot(gr["K/K_c^wb"], gr["gamma closed form"], "-", color="k", lw=1,
                  label="sqrt(K lambda / 2N - D^2)")
     axes[1].errorbar(gr["K/K_c^wb"], gr["slope"], yerr=gr["slope se"], fmt="o", capsize=3,
                      color="C3", label="fitted on K_N")
