@@ -4,10 +4,12 @@
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <numeric>
 #include <string>
 
-#include "network/degree_statistics.hpp"
-#include "network/structure.hpp"
+#include "core/error.hpp"
+#include "parallel/distributed_structure.hpp"
+#include "parallel/parallel_session.hpp"
 #include "theory/critical_coupling.hpp"
 #include "theory/onset_amplitude.hpp"
 
@@ -69,20 +71,47 @@ void add_warnings(NetworkSummary& s) {
 }  // namespace
 
 NetworkSummary summarise(const Network& network, const PerronResult& perron, double sigma0) {
+  return summarise(DistributedNetwork(network), perron, sigma0);
+}
+
+namespace {
+
+// eq:rhodef: rho = (d^T A d) (sum d) / (sum d^2)^2 from the rows held here, reduced over ranks.
+double degree_correlation(const DistributedNetwork& network, const std::vector<double>& d_local) {
+  std::vector<double> ad;
+  network.apply(d_local, ad);
+  std::vector<double> sums(3, 0.0);  // sum d, sum d^2, d^T A d
+  for (std::size_t r = 0; r < d_local.size(); ++r) {
+    sums[0] += d_local[r];
+    sums[1] += d_local[r] * d_local[r];
+    sums[2] += d_local[r] * ad[r];
+  }
+  ParallelSession::sum_in_place(sums);
+  if (sums[1] == 0.0) {
+    throw ParameterError("degree correlation: network", "no edges", "a network with edges");
+  }
+  return sums[2] * sums[0] / (sums[1] * sums[1]);
+}
+
+}  // namespace
+
+NetworkSummary summarise(const DistributedNetwork& network, const PerronResult& perron,
+                         double sigma0) {
   NetworkSummary s;
-  s.n = network.size();
-  s.edges = network.edges();
-  s.nnz = network.nnz();
-  s.self_loops = network.self_loops();
+  s.n = network.global_size();
+  s.nnz = network.global_nnz();
+  s.self_loops = network.global_self_loops();
+  s.edges = (s.nnz + s.self_loops) / 2;
   s.weighted = network.weighted();
-  const auto d = network.degrees();
-  s.mean_degree = mean_degree(network);
+  const std::vector<double> d_local = network.local_degrees();
+  const std::vector<double> d = network.gather(d_local);
+  s.mean_degree = std::accumulate(d.begin(), d.end(), 0.0) / static_cast<double>(d.size());
   s.max_degree = *std::max_element(d.begin(), d.end());
-  s.rho = degree_correlation(network);
-  const Components c = connected_components(network);
-  s.components = c.count;
-  s.largest_component = c.largest;
-  s.bipartite = is_bipartite(network);
+  s.rho = degree_correlation(network, d_local);
+  const NetworkStructure structure = distributed_structure(network);
+  s.components = structure.components;
+  s.largest_component = structure.largest;
+  s.bipartite = structure.bipartite;
   add_spectrum(s, perron, sigma0);
   add_warnings(s);
   return s;

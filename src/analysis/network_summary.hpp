@@ -8,6 +8,7 @@
 
 #include "network/complete_graph.hpp"
 #include "network/network.hpp"
+#include "parallel/distributed_network.hpp"
 #include "spectral/perron.hpp"
 
 namespace hmfnet {
@@ -51,6 +52,10 @@ constexpr double k_near_degenerate_ratio = 1.1;
 
 /// Combines the structural facts with a Perron pair computed on the same network.
 NetworkSummary summarise(const Network& network, const PerronResult& perron, double sigma0 = 0.0);
+/// The same from the rows each rank holds (degrees and A d from the row blocks, structure by
+/// merged forests: parallel/distributed_structure.hpp). Collective; every rank gets the summary.
+NetworkSummary summarise(const DistributedNetwork& network, const PerronResult& perron,
+                         double sigma0 = 0.0);
 
 /// The same from K_N's closed forms, in O(1) at any N: rho = 1, one component, lambda and
 /// lambda_2 exact (residual 0), G from the uniform Perron vector (sqrt(2/5), as every regular

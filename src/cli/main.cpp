@@ -48,6 +48,10 @@ int run(int argc, char** argv) {
   } catch (const hmfnet::RunInterrupted& e) {
     std::cerr << "hmfnet: interrupted: " << e.what() << '\n';
     return 128 + e.signal();  // the shell's convention for a process ended by a signal
+  } catch (const hmfnet::CollectiveError& e) {
+    // Every rank holds the same message: one report, every rank exits.
+    if (hmfnet::ParallelSession::rank() == 0) std::cerr << "hmfnet: error: " << e.what() << '\n';
+    return 1;
   } catch (const hmfnet::ConvergenceError& e) {
     std::cerr << "hmfnet: not converged: " << e.what() << '\n';
     return 3;

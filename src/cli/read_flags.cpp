@@ -36,4 +36,10 @@ NetworkInput ReadFlags::read_input(const std::string& path) const {
   return r;
 }
 
+DistributedInput ReadFlags::read_distributed(const std::string& path) const {
+  DistributedInput r = read_distributed_input(path, options());
+  print_warnings(r.warnings);
+  return r;
+}
+
 }  // namespace hmfnet::cli

@@ -6,6 +6,7 @@
 
 #include "io/network_file.hpp"
 #include "io/read_options.hpp"
+#include "parallel/distributed_read.hpp"
 
 namespace hmfnet::cli {
 
@@ -19,6 +20,9 @@ struct ReadFlags {
   Network read(const std::string& path) const;
   /// Stored rows or the complete graph held implicitly (spectrum, theory, simulate).
   NetworkInput read_input(const std::string& path) const;
+  /// This rank's rows only where the format allows it (parallel/distributed_read.hpp).
+  /// Collective.
+  DistributedInput read_distributed(const std::string& path) const;
 
  private:
   ReadOptions options() const;

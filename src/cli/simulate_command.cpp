@@ -77,12 +77,9 @@ std::unique_ptr<CouplingForce> complete_graph_force(const SimulateFlags& f,
                                         distributed.local_size());
 }
 
-std::unique_ptr<CouplingForce> choose_force(const SimulateFlags& f, const NetworkInput& input,
+std::unique_ptr<CouplingForce> choose_force(const SimulateFlags& f, const DistributedInput& input,
                                             const DistributedNetwork& distributed) {
-  if (const auto* complete = input.complete()) {
-    return complete_graph_force(f, *complete, distributed);
-  }
-  const Network& net = input.stored();
+  if (input.complete) return complete_graph_force(f, *input.complete, distributed);
   const ForcePrecision precision = parse_force_precision(f.precision);
   if (precision == ForcePrecision::float32 && f.force == "rank-one") {
     throw ParameterError("--precision", "float32",
@@ -90,7 +87,7 @@ std::unique_ptr<CouplingForce> choose_force(const SimulateFlags& f, const Networ
   }
   // float32 is a property of the sparse kernel: asking for it selects that kernel under auto.
   if (f.force != "sparse" && precision == ForcePrecision::float64) {
-    auto structure = detect_rank_one(net);
+    auto structure = detect_rank_one(distributed);
     if (structure) {
       return std::make_unique<RankOneForce>(std::move(*structure), distributed.first_row(),
                                             distributed.local_size());
@@ -166,16 +163,14 @@ void run(const SimulateFlags& f) {
   if (!f.output.empty()) require_writable_destination(f.output);
   if (!f.checkpoint.empty()) require_writable_destination(f.checkpoint);
   make_integrator(f.integrator);  // unknown names fail here, before any work
-  const NetworkInput input = f.read.read_input(f.input);
-  const auto* complete = input.complete();
-  const auto distributed = complete != nullptr
-                               ? std::make_unique<DistributedNetwork>(*complete)
-                               : std::make_unique<DistributedNetwork>(input.stored());
+  const DistributedInput input = f.read.read_distributed(f.input);
+  const CompleteGraph* complete = input.complete ? &*input.complete : nullptr;
+  const DistributedNetwork* distributed = input.network.get();
   const double lambda =
       complete != nullptr ? complete->lambda() : perron_eigenpair(*distributed).lambda;
-  const NodeIndex n = input.size();
+  const NodeIndex n = distributed->global_size();
   const EdgeOffset nnz = distributed->global_nnz();
-  const EdgeOffset edges = complete != nullptr ? complete->edges() : input.stored().edges();
+  const EdgeOffset edges = (nnz + distributed->global_self_loops()) / 2;
   const double Kc =
       critical_coupling(parse_momentum_distribution(f.momenta, "--momenta"), f.sigma0, n, lambda);
   const SimulationParameters params = parameters(f, Kc);
@@ -190,7 +185,7 @@ void run(const SimulateFlags& f) {
   install_interrupt_handlers();
   const std::vector<double> degrees =
       complete != nullptr ? std::vector<double>(static_cast<std::size_t>(n), complete->degree())
-                          : input.stored().degrees();
+                          : distributed->gather(distributed->local_degrees());
   const SimulationResult result = simulate(*distributed, degrees, *force, params);
   if (result.interrupted) {
     const int signal = interrupt_signal();
@@ -219,6 +214,9 @@ void run(const SimulateFlags& f) {
                                 static_cast<double>(result.lanes) / result.integration_seconds;
   out["resumed"] = result.resumed;
   out["threads"] = result.threads;
+  out["ranks"] = ParallelSession::ranks();
+  const std::vector<double> peak_mb = ParallelSession::peak_memory_mb();
+  out["peak_rss_mb_per_rank"] = peak_mb;
   for (const auto& p : result.points) out["points"].push_back(point_json(p, Kc));
   if (!f.output.empty()) {
     RunMetadata meta;
@@ -231,6 +229,7 @@ void run(const SimulateFlags& f) {
         nlohmann::json::parse(provenance("simulate", run_parameters(params, meta.inputs_json)));
     prov["ranks"] = ParallelSession::ranks();
     prov["threads"] = result.threads;
+    prov["peak_rss_mb_per_rank"] = peak_mb;
     prov["wall_seconds"] =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
     meta.provenance_json = prov.dump();

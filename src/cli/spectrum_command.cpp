@@ -2,6 +2,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "analysis/network_summary.hpp"
 #include "cli/command_options.hpp"
@@ -9,6 +10,7 @@
 #include "cli/read_flags.hpp"
 #include "cli/validators.hpp"
 #include "parallel/distributed_network.hpp"
+#include "parallel/parallel_session.hpp"
 
 namespace hmfnet::cli {
 
@@ -41,24 +43,25 @@ void print_text(const NetworkSummary& s) {
   for (const auto& w : s.warnings) std::cout << "warning: " << w << "\n";
 }
 
-NetworkSummary summary(const SpectrumFlags& f, const NetworkInput& input) {
+NetworkSummary summary(const SpectrumFlags& f, const DistributedInput& input) {
   // K_N: every number has a closed form (network/complete_graph.hpp), no solve.
-  if (const auto* complete = input.complete()) {
-    return summarise(*complete, f.sigma0);
-  }
-  const DistributedNetwork distributed(input.stored());
+  if (input.complete) return summarise(*input.complete, f.sigma0);
   PerronOptions options;
   options.tolerance = f.tolerance;
   options.second_eigenvalue = true;  // the gap: near-degenerate lambda is reported
-  const PerronResult perron = perron_eigenpair(distributed, options);
-  return summarise(input.stored(), perron, f.sigma0);
+  const PerronResult perron = perron_eigenpair(*input.network, options);
+  return summarise(*input.network, perron, f.sigma0);
 }
 
 void run(const SpectrumFlags& f) {
-  const NetworkSummary s = summary(f, f.read.read_input(f.input));
+  const NetworkSummary s = summary(f, f.read.read_distributed(f.input));
+  const std::vector<double> peak_mb = ParallelSession::peak_memory_mb();  // collective
   if (!is_root()) return;
   if (f.json) {
-    std::cout << to_json(s) << std::endl;
+    nlohmann::json j = nlohmann::json::parse(to_json(s));
+    j["ranks"] = ParallelSession::ranks();
+    j["peak_rss_mb_per_rank"] = peak_mb;
+    std::cout << j.dump() << std::endl;
   } else {
     print_text(s);
   }

@@ -44,7 +44,7 @@ class NetworkForce : public CouplingForce {
                 std::vector<double>& g);
 
   const DistributedNetwork& m_network;
-  DistributedNetwork::LocalAdjacency m_adjacency;
+  const DistributedNetwork::LocalAdjacency& m_adjacency;  ///< the network's own rows
   double m_inverse_n;
   bool m_identity_import;           // one rank: the column space is the owned block
   std::vector<double> m_owned_cs;   // rows x replicas x [cos, sin]

@@ -16,29 +16,39 @@ bool close(double x, double y) {
 
 }  // namespace
 
-std::optional<RankOneStructure> detect_rank_one(const Network& net) {
-  const NodeIndex n = net.size();
-  if (n < 3) return std::nullopt;
-  const bool diagonal = net.self_loops() == n;
-  if (!diagonal && (net.self_loops() != 0 || net.weighted())) return std::nullopt;
+std::optional<RankOneStructure> detect_rank_one(const DistributedNetwork& net) {
+  const NodeIndex n = net.global_size();
+  if (n < 3 || !net.stores_rows()) return std::nullopt;
+  // Every decision up to the weights uses global counts only, so all ranks take the same path.
+  const bool diagonal = net.global_self_loops() == n;
+  if (!diagonal && (net.global_self_loops() != 0 || net.weighted())) return std::nullopt;
   const EdgeOffset full = diagonal ? n : n - 1;
+  // A row holds at most `full` entries (distinct columns; no diagonal when there are no
+  // self-loops), so n full rows are exactly nnz = n full; then every rank's column space is all
+  // n nodes and a local column index is the global one.
+  if (net.global_nnz() != full * static_cast<EdgeOffset>(n)) return std::nullopt;
   RankOneStructure s;
   s.diagonal = diagonal;
   s.a.assign(static_cast<std::size_t>(n), 1.0);
-  for (NodeIndex i = 0; i < n; ++i) {
-    if (static_cast<EdgeOffset>(net.row(i).size()) != full) return std::nullopt;
-    if (diagonal && net.weighted()) {
-      // Row i holds column i at position i (a full, sorted row).
-      s.a[static_cast<std::size_t>(i)] = std::sqrt(net.weight(net.row_begin(i) + i));
-    }
-  }
   if (!net.weighted()) return s;
-  for (NodeIndex i = 0; i < n; ++i) {
-    for (const auto [j, w] : net.row(i)) {
-      const double expected = s.a[static_cast<std::size_t>(i)] * s.a[static_cast<std::size_t>(j)];
-      if (!close(w, expected)) return std::nullopt;
+  const auto& rows = net.local_adjacency();
+  const auto own = static_cast<std::size_t>(net.local_size());
+  std::vector<double> a_local(own);
+  for (std::size_t r = 0; r < own; ++r) {
+    const auto i = static_cast<std::size_t>(net.first_row()) + r;
+    a_local[r] = std::sqrt(rows.weights[static_cast<std::size_t>(rows.row_ptr[r]) + i]);
+  }
+  s.a = net.gather(a_local);
+  double mismatches = 0.0;
+  for (std::size_t r = 0; r < own; ++r) {
+    const double ai = a_local[r];
+    for (auto k = static_cast<std::size_t>(rows.row_ptr[r]);
+         k < static_cast<std::size_t>(rows.row_ptr[r + 1]); ++k) {
+      const double expected = ai * s.a[static_cast<std::size_t>(rows.cols[k])];
+      if (!close(rows.weights[k], expected)) mismatches += 1.0;
     }
   }
+  if (ParallelSession::sum(mismatches) > 0.0) return std::nullopt;
   return s;
 }
 

@@ -11,6 +11,7 @@
 
 #include "dynamics/coupling_force.hpp"
 #include "dynamics/ordered_sum.hpp"
+#include "parallel/distributed_network.hpp"
 
 namespace hmfnet {
 
@@ -22,8 +23,8 @@ struct RankOneStructure {
 /// The rank-one structure of `network`, if it has one: every row full (N entries with the
 /// diagonal, N-1 without), and every stored A_nm = a_n a_m to 1e-12 relative. Weighted networks
 /// without a diagonal are not recognised (a is then not determined by the diagonal), nor are
-/// networks with N < 3. O(nnz) = O(N^2).
-std::optional<RankOneStructure> detect_rank_one(const Network& network);
+/// networks with N < 3. Collective; O(1) unless nnz = N (N - 1) or N^2, then O(nnz / ranks).
+std::optional<RankOneStructure> detect_rank_one(const DistributedNetwork& network);
 
 class RankOneForce : public CouplingForce {
  public:

@@ -174,7 +174,47 @@ std::vector<T> read_vector(const Hdf5File& f, hid_t where, const std::string& na
   }
   return v;
 }
+
+template <class T>
+std::vector<T> read_range(const Hdf5File& f, hid_t where, const std::string& name,
+                          std::size_t first, std::size_t count, hid_t mem_type) {
+  std::vector<T> v(count);
+  if (count == 0) return v;
+  H5Id set(H5Dopen2(where, name.c_str(), H5P_DEFAULT), H5Dclose);
+  H5Id file_space(H5Dget_space(set.get()), H5Sclose);
+  const hsize_t start[1] = {static_cast<hsize_t>(first)};
+  const hsize_t length[1] = {static_cast<hsize_t>(count)};
+  H5Id memory_space(H5Screate_simple(1, length, nullptr), H5Sclose);
+  if (H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, length, nullptr) < 0 ||
+      H5Dread(set.get(), mem_type, memory_space.get(), file_space.get(), H5P_DEFAULT, v.data()) <
+          0) {
+    f.fail("cannot read elements [" + std::to_string(first) + ", " + std::to_string(first + count) +
+           ") of dataset " + name);
+  }
+  return v;
+}
 }  // namespace
+
+std::size_t Hdf5File::dataset_size(hid_t where, const std::string& name,
+                                   H5T_class_t expected) const {
+  return checked_length(where, name, expected);
+}
+
+std::vector<std::int32_t> Hdf5File::read_int32(hid_t where, const std::string& name,
+                                               std::size_t first, std::size_t count) const {
+  if (first + count > checked_length(where, name, H5T_INTEGER)) {
+    fail("dataset " + name + " is shorter than element " + std::to_string(first + count));
+  }
+  return read_range<std::int32_t>(*this, where, name, first, count, H5T_NATIVE_INT32);
+}
+
+std::vector<double> Hdf5File::read_double(hid_t where, const std::string& name, std::size_t first,
+                                          std::size_t count) const {
+  if (first + count > checked_length(where, name, H5T_FLOAT)) {
+    fail("dataset " + name + " is shorter than element " + std::to_string(first + count));
+  }
+  return read_range<double>(*this, where, name, first, count, H5T_NATIVE_DOUBLE);
+}
 
 std::size_t Hdf5File::checked_length(hid_t where, const std::string& name,
                                      H5T_class_t expected) const {

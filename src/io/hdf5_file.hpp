@@ -45,6 +45,13 @@ class Hdf5File {
   std::vector<std::int64_t> read_int64(hid_t where, const std::string& name) const;
   std::vector<std::int32_t> read_int32(hid_t where, const std::string& name) const;
   std::vector<double> read_double(hid_t where, const std::string& name) const;
+  /// Elements [first, first + count) of a 1-D dataset (one hyperslab: only those are read).
+  std::vector<std::int32_t> read_int32(hid_t where, const std::string& name, std::size_t first,
+                                       std::size_t count) const;
+  std::vector<double> read_double(hid_t where, const std::string& name, std::size_t first,
+                                  std::size_t count) const;
+  /// Length of a 1-D dataset of the given class (checked as the readers check it).
+  std::size_t dataset_size(hid_t where, const std::string& name, H5T_class_t expected) const;
   /// 1-D dataset of fixed-length strings (as long as the longest; h5py reads bytes).
   void write_strings(hid_t where, const std::string& name, const std::vector<std::string>& v) const;
   std::vector<std::string> read_strings(hid_t where, const std::string& name) const;

@@ -75,6 +75,28 @@ CompleteGraph read_complete_graph(const Hdf5File& file) {
   return graph;
 }
 
+NodeIndex node_count(const Hdf5File& file, hid_t group) {
+  const std::int64_t n = file.int_attribute(group, "n");
+  if (n < 0 || n > std::numeric_limits<NodeIndex>::max()) {
+    file.fail("/network: node count " + std::to_string(n) + " out of range");
+  }
+  return static_cast<NodeIndex>(n);
+}
+
+// Network::check_csr walks col[row_ptr[i]..row_ptr[i+1]) row by row and only then sees a
+// pointer that is out of order, so pointers from a file are bounded first: a corrupted one
+// must be refused, not read past the end of col.
+void require_bounded_row_ptr(const Hdf5File& file, const std::vector<std::int64_t>& row_ptr,
+                             std::int64_t nnz) {
+  for (std::size_t i = 0; i < row_ptr.size(); ++i) {
+    const std::int64_t low = i == 0 ? 0 : row_ptr[i - 1];
+    if (row_ptr[i] < low || row_ptr[i] > nnz) {
+      file.fail("/network: row_ptr[" + std::to_string(i) + "] = " + std::to_string(row_ptr[i]) +
+                " is outside [" + std::to_string(low) + ", nnz = " + std::to_string(nnz) + "]");
+    }
+  }
+}
+
 }  // namespace
 
 std::optional<CompleteGraph> read_implicit_network_hdf5(const std::string& path) {
@@ -83,41 +105,79 @@ std::optional<CompleteGraph> read_implicit_network_hdf5(const std::string& path)
   return read_complete_graph(file);
 }
 
-ReadResult read_network_hdf5(const std::string& path) {
-  const Hdf5File file(path, Hdf5File::Mode::read);
+namespace {
+void refuse_implicit(const Hdf5File& file) {
   if (network_format_version(file) == k_implicit_version) {
     const CompleteGraph graph = read_complete_graph(file);
     file.fail("the complete graph of " + std::to_string(graph.n) +
               " nodes is stored implicitly, not as rows: this needs stored rows (hmfnet "
               "spectrum, theory and simulate read it; in the library, read_network_input)");
   }
+}
+}  // namespace
+
+ReadResult read_network_hdf5(const std::string& path) {
+  const Hdf5File file(path, Hdf5File::Mode::read);
+  refuse_implicit(file);
   const H5Id group = file.open_group("network");
-  const std::int64_t n = file.int_attribute(group.get(), "n");
-  if (n < 0 || n > std::numeric_limits<NodeIndex>::max()) {
-    file.fail("/network: node count " + std::to_string(n) + " out of range");
-  }
+  const NodeIndex n = node_count(file, group.get());
   auto row_ptr = file.read_int64(group.get(), "row_ptr");
   auto cols = file.read_int32(group.get(), "col");
   std::vector<double> weights;
   if (file.int_attribute(group.get(), "weighted") != 0) {
     weights = file.read_double(group.get(), "weights");
   }
-  // Network::check_csr walks col[row_ptr[i]..row_ptr[i+1]) row by row and only then sees a
-  // pointer that is out of order, so pointers from a file are bounded first: a corrupted one
-  // must be refused, not read past the end of col.
-  const auto nnz = static_cast<std::int64_t>(cols.size());
-  for (std::size_t i = 0; i < row_ptr.size(); ++i) {
-    const std::int64_t low = i == 0 ? 0 : row_ptr[i - 1];
-    if (row_ptr[i] < low || row_ptr[i] > nnz) {
-      file.fail("/network: row_ptr[" + std::to_string(i) + "] = " + std::to_string(row_ptr[i]) +
-                " is outside [" + std::to_string(low) + ", nnz = " + std::to_string(nnz) + "]");
-    }
-  }
-  const auto nodes = static_cast<NodeIndex>(n);
+  require_bounded_row_ptr(file, row_ptr, static_cast<std::int64_t>(cols.size()));
+  const NodeIndex nodes = n;
   const std::string why = Network::check_csr(nodes, row_ptr, cols, weights);
   if (!why.empty()) file.fail("/network: " + why);
   if (cols.empty()) file.fail("empty network: " + std::to_string(n) + " nodes and no edges");
   return {Network::from_csr(nodes, std::move(row_ptr), std::move(cols), std::move(weights)), {}};
+}
+
+RowBlock read_network_hdf5_rows(const std::string& path, int part, int parts) {
+  if (parts < 1 || part < 0 || part >= parts) {
+    throw ParameterError("row block of " + path,
+                         "part " + std::to_string(part) + " of " + std::to_string(parts),
+                         "0 <= part < parts");
+  }
+  const Hdf5File file(path, Hdf5File::Mode::read);
+  refuse_implicit(file);
+  const H5Id group = file.open_group("network");
+  RowBlock block;
+  block.n = node_count(file, group.get());
+  // O(N) on every rank: the pointers bound the blocks and cut them by stored entries.
+  const std::vector<std::int64_t> row_ptr = file.read_int64(group.get(), "row_ptr");
+  const auto nnz = static_cast<std::int64_t>(file.dataset_size(group.get(), "col", H5T_INTEGER));
+  if (row_ptr.size() != static_cast<std::size_t>(block.n) + 1) {
+    file.fail("/network: row_ptr has " + std::to_string(row_ptr.size()) +
+              " entries, expected n+1 = " + std::to_string(std::int64_t{block.n} + 1));
+  }
+  require_bounded_row_ptr(file, row_ptr, nnz);
+  if (row_ptr.back() != nnz) {
+    file.fail("/network: row_ptr[n] = " + std::to_string(row_ptr.back()) + " but there are " +
+              std::to_string(nnz) + " column indices");
+  }
+  if (nnz == 0) file.fail("empty network: " + std::to_string(block.n) + " nodes and no edges");
+  const std::vector<NodeIndex> starts = balanced_row_starts(row_ptr, parts);
+  block.first_row = starts[static_cast<std::size_t>(part)];
+  const NodeIndex last = starts[static_cast<std::size_t>(part) + 1];
+  const std::int64_t begin = row_ptr[static_cast<std::size_t>(block.first_row)];
+  const std::int64_t end = row_ptr[static_cast<std::size_t>(last)];
+  block.row_ptr.assign(row_ptr.begin() + block.first_row, row_ptr.begin() + last + 1);
+  for (auto& p : block.row_ptr) p -= begin;
+  const auto first = static_cast<std::size_t>(begin);
+  const auto count = static_cast<std::size_t>(end - begin);
+  block.cols = file.read_int32(group.get(), "col", first, count);
+  if (file.int_attribute(group.get(), "weighted") != 0) {
+    block.weights = file.read_double(group.get(), "weights", first, count);
+    if (file.dataset_size(group.get(), "weights", H5T_FLOAT) != static_cast<std::size_t>(nnz)) {
+      file.fail("/network: weights and col differ in length");
+    }
+  }
+  const std::string why = check_row_block(block);
+  if (!why.empty()) file.fail("/network: " + why);
+  return block;
 }
 
 void write_network_hdf5(const std::string& path, const Network& network,

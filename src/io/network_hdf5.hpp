@@ -17,11 +17,19 @@
 
 #include "io/read_options.hpp"
 #include "network/complete_graph.hpp"
+#include "network/row_block.hpp"
 
 namespace hmfnet {
 
 /// The CSR network; a file with an implicit structure is refused (InputError naming it).
 ReadResult read_network_hdf5(const std::string& path);
+
+/// Block `part` of `parts` of a CSR network file (0 <= part < parts): the rows
+/// balanced_row_starts gives it, read by hyperslabs, so a rank holds O(N) pointers and its own
+/// entries only. Every per-row invariant is checked (InputError naming the file); symmetry spans
+/// the blocks: check it with require_symmetric (parallel/row_block_checks.hpp, collective).
+/// Not collective itself: every rank opens the file read-only on its own.
+RowBlock read_network_hdf5_rows(const std::string& path, int part, int parts);
 
 /// The complete graph a format-2 file holds, or nullopt for a CSR file (read_network_hdf5 reads
 /// it). Refuses, naming the file, an unknown structure and N or self_loops_all out of range.

@@ -51,10 +51,32 @@ std::string check_shape(NodeIndex n, const std::vector<EdgeOffset>& row_ptr,
   return {};
 }
 
-std::string check_rows(NodeIndex n, const std::vector<EdgeOffset>& row_ptr,
-                       const std::vector<NodeIndex>& cols, const std::vector<double>& weights) {
+std::string check_symmetry(NodeIndex n, const std::vector<EdgeOffset>& row_ptr,
+                           const std::vector<NodeIndex>& cols, const std::vector<double>& weights) {
   for (NodeIndex i = 0; i < n; ++i) {
-    const EdgeOffset b = row_ptr[idx(i)], e = row_ptr[idx(i) + 1];
+    for (EdgeOffset k = row_ptr[idx(i)]; k < row_ptr[idx(i) + 1]; ++k) {
+      const NodeIndex j = cols[idx(k)];
+      if (j <= i) continue;
+      const EdgeOffset t = find_in_row(row_ptr, cols, j, i);
+      if (t < 0) return "entry " + entry_name(i, j) + " has no transpose " + entry_name(j, i);
+      if (!weights.empty() && weights[idx(t)] != weights[idx(k)]) {
+        return "entry " + entry_name(i, j) + " and its transpose have different weights";
+      }
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+std::string check_row_entries(NodeIndex n, NodeIndex first_row,
+                              const std::vector<EdgeOffset>& row_ptr,
+                              const std::vector<NodeIndex>& cols,
+                              const std::vector<double>& weights) {
+  const auto rows = static_cast<NodeIndex>(row_ptr.size()) - 1;
+  for (NodeIndex r = 0; r < rows; ++r) {
+    const NodeIndex i = first_row + r;
+    const EdgeOffset b = row_ptr[idx(r)], e = row_ptr[idx(r) + 1];
     for (EdgeOffset k = b; k < e; ++k) {
       const NodeIndex j = cols[idx(k)];
       if (j < 0 || j >= n) {
@@ -77,29 +99,11 @@ std::string check_rows(NodeIndex n, const std::vector<EdgeOffset>& row_ptr,
   return {};
 }
 
-std::string check_symmetry(NodeIndex n, const std::vector<EdgeOffset>& row_ptr,
-                           const std::vector<NodeIndex>& cols, const std::vector<double>& weights) {
-  for (NodeIndex i = 0; i < n; ++i) {
-    for (EdgeOffset k = row_ptr[idx(i)]; k < row_ptr[idx(i) + 1]; ++k) {
-      const NodeIndex j = cols[idx(k)];
-      if (j <= i) continue;
-      const EdgeOffset t = find_in_row(row_ptr, cols, j, i);
-      if (t < 0) return "entry " + entry_name(i, j) + " has no transpose " + entry_name(j, i);
-      if (!weights.empty() && weights[idx(t)] != weights[idx(k)]) {
-        return "entry " + entry_name(i, j) + " and its transpose have different weights";
-      }
-    }
-  }
-  return {};
-}
-
-}  // namespace
-
 std::string Network::check_csr(NodeIndex n, const std::vector<EdgeOffset>& row_ptr,
                                const std::vector<NodeIndex>& cols,
                                const std::vector<double>& weights) {
   std::string why = check_shape(n, row_ptr, cols, weights);
-  if (why.empty()) why = check_rows(n, row_ptr, cols, weights);
+  if (why.empty()) why = check_row_entries(n, 0, row_ptr, cols, weights);
   if (why.empty()) why = check_symmetry(n, row_ptr, cols, weights);
   return why;
 }

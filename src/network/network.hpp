@@ -71,6 +71,16 @@ class RowView {
   std::size_t m_count;
 };
 
+/// The first violated per-row invariant of rows [first_row, first_row + row_ptr.size() - 1) of a
+/// network of n nodes (columns in [0, n), strictly increasing within a row, weights finite and
+/// > 0), or an empty string. row_ptr is local (row_ptr[0] = 0) and already bounded by cols.size().
+/// Symmetry spans rows, so it is not checked here (Network::check_csr; across ranks,
+/// require_symmetric in parallel/row_block_checks.hpp).
+std::string check_row_entries(NodeIndex n, NodeIndex first_row,
+                              const std::vector<EdgeOffset>& row_ptr,
+                              const std::vector<NodeIndex>& cols,
+                              const std::vector<double>& weights);
+
 class Network {
  public:
   Network() = default;

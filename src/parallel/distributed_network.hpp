@@ -1,11 +1,14 @@
 #pragma once
-// The network as a Tpetra::CrsMatrix over a Tpetra::Map, rows in contiguous blocks over the ranks
-// of the default communicator. Trilinos types stay behind the pimpl: only
-// distributed_network_impl.hpp (included by a few .cpp files) names them.
+// The network distributed by rows: each rank holds one contiguous block of rows (a RowBlock,
+// cut by balanced_row_starts so that ranks hold about equal stored entries) and nothing else of
+// size nnz. The rows are kept once, as a CSR whose columns index the rank's *column space* (its
+// own rows and the ghost nodes its rows reference, in ascending global order); a Tpetra::Map
+// describes the row blocks and a Tpetra::Import fills the ghost values. The force kernel reads
+// that CSR directly, and A v products (the eigensolver's Tpetra operator, apply) run on it too:
+// one copy of the structure, 4 bytes per stored entry (+ 8 when weighted) + 8 per row.
+// Trilinos types stay behind the pimpl: only distributed_network_impl.hpp names them.
 //
-// Every rank holds the same replicated Network (generators are deterministic, readers read the
-// same file) and inserts only the rows it owns; the matrix stores values as double.
-// The complete graph is held implicitly: only the row blocks (the Map), no matrix; what needs
+// The complete graph is held implicitly: only the row blocks (the Map), no rows; what needs
 // stored rows (apply, local_adjacency, import_columns, the eigensolver) refuses it, and its
 // callers use the closed forms of network/complete_graph.hpp and the rank-one force instead.
 #include <memory>
@@ -13,13 +16,20 @@
 
 #include "network/complete_graph.hpp"
 #include "network/network.hpp"
+#include "network/row_block.hpp"
 
 namespace hmfnet {
 
 class DistributedNetwork {
  public:
-  /// Needs a live ParallelSession. Collective: every rank calls it with the same network.
+  /// Needs a live ParallelSession. Collective: every rank calls it with the same network and
+  /// keeps a copy of its own balanced block only.
   explicit DistributedNetwork(const Network& network);
+  /// Takes over this rank's block. Collective: the blocks must be those of
+  /// balanced_row_starts-style cuts, contiguous and in rank order (a block out of place is
+  /// refused on every rank). Symmetry across blocks is the caller's to check
+  /// (require_symmetric, parallel/row_block_checks.hpp).
+  explicit DistributedNetwork(RowBlock block);
   /// The row blocks of K_N over the ranks, and no stored rows. Collective.
   explicit DistributedNetwork(const CompleteGraph& graph);
   ~DistributedNetwork();
@@ -34,6 +44,12 @@ class DistributedNetwork {
   EdgeOffset global_nnz() const;
   /// False for a structure held implicitly (the complete graph): no matrix behind it.
   bool stores_rows() const;
+  /// True when some stored entry has a weight (the same answer on every rank).
+  bool weighted() const;
+  /// Diagonal entries over all ranks (for the complete graph, n or 0).
+  EdgeOffset global_self_loops() const;
+  /// d_i = sum_j A_ij of the rows owned here.
+  std::vector<double> local_degrees() const;
 
   /// y = A x on the rows owned here; x and y hold this rank's entries (local_size() each).
   /// Collective (ghost values of x travel through the matrix's Import).
@@ -44,15 +60,21 @@ class DistributedNetwork {
 
   /// This rank's rows as a plain CSR whose column indices point into the *column space*: the
   /// owned rows' values and the ghost values of remote neighbours, laid out as import_columns
-  /// fills them. Rows in the same order as the owned block; columns sorted within a row by
-  /// global index (the same summation order on every rank count). `weights` empty: 0/1 network.
+  /// fills them. Rows in the same order as the owned block; the column space is in ascending
+  /// global order, so columns within a row are too (the same summation order on every rank
+  /// count). `weights` empty: 0/1 network.
   struct LocalAdjacency {
     std::vector<EdgeOffset> row_ptr;
     std::vector<NodeIndex> cols;
     std::vector<double> weights;
     NodeIndex columns = 0;  ///< size of the column space
   };
-  LocalAdjacency local_adjacency() const;
+  /// The stored rows themselves (no copy): valid while this object lives.
+  const LocalAdjacency& local_adjacency() const;
+  /// Global index of column-space entry c (0 <= c < LocalAdjacency::columns).
+  NodeIndex global_column(NodeIndex c) const;
+  /// Every column-space entry's global index, ascending.
+  std::vector<NodeIndex> column_globals() const;
 
   /// Fills the column space from the owned block: `owned` is local_size() x width row-major,
   /// `columns` is LocalAdjacency::columns x width row-major. Collective (one Tpetra Import).

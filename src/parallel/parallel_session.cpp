@@ -1,7 +1,11 @@
 #include "parallel/parallel_session.hpp"
 
+#include <sys/resource.h>
+
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Core.hpp>
+#include <algorithm>
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -62,6 +66,77 @@ void ParallelSession::sum_in_place(std::vector<double>& values) {
   Teuchos::reduceAll(*Tpetra::getDefaultComm(), Teuchos::REDUCE_SUM,
                      static_cast<int>(values.size()), values.data(), global.data());
   values.swap(global);
+}
+
+void ParallelSession::sum_in_place(std::vector<std::uint64_t>& values) {
+  if (values.empty() || ranks() == 1) return;
+  static_assert(sizeof(unsigned long long) == sizeof(std::uint64_t));
+  std::vector<unsigned long long> mine(values.size()), global(values.size());
+  std::copy(values.begin(), values.end(), mine.begin());
+  // Unsigned addition wraps: the sums are exact modulo 2^64 whatever the reduction order.
+  Teuchos::reduceAll(*Tpetra::getDefaultComm(), Teuchos::REDUCE_SUM,
+                     static_cast<int>(values.size()), mine.data(), global.data());
+  std::copy(global.begin(), global.end(), values.begin());
+}
+
+void ParallelSession::send(const std::vector<std::int64_t>& values, int destination) {
+  const auto comm = Tpetra::getDefaultComm();
+  const auto length = static_cast<long long>(values.size());
+  Teuchos::send(*comm, length, destination);
+  std::vector<long long> data(values.begin(), values.end());
+  if (length > 0) Teuchos::send(*comm, static_cast<int>(length), data.data(), destination);
+}
+
+std::vector<std::int64_t> ParallelSession::receive(int source) {
+  const auto comm = Tpetra::getDefaultComm();
+  long long length = 0;
+  Teuchos::receive(*comm, source, &length);
+  std::vector<long long> data(static_cast<std::size_t>(length));
+  if (length > 0) Teuchos::receive(*comm, source, static_cast<int>(length), data.data());
+  return std::vector<std::int64_t>(data.begin(), data.end());
+}
+
+void ParallelSession::broadcast(std::vector<std::int64_t>& values, int root) {
+  const auto comm = Tpetra::getDefaultComm();
+  auto length = static_cast<long long>(values.size());
+  Teuchos::broadcast(*comm, root, Teuchos::outArg(length));
+  std::vector<long long> data(values.begin(), values.end());
+  data.resize(static_cast<std::size_t>(length));
+  if (length > 0) Teuchos::broadcast(*comm, root, static_cast<int>(length), data.data());
+  values.assign(data.begin(), data.end());
+}
+
+std::vector<double> ParallelSession::peak_memory_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  std::vector<double> mb(static_cast<std::size_t>(ranks()), 0.0);
+  mb[static_cast<std::size_t>(rank())] = static_cast<double>(usage.ru_maxrss) / 1024.0;  // KB
+  sum_in_place(mb);
+  return mb;
+}
+
+void ParallelSession::agree(const std::function<void()>& step) {
+  std::string message;
+  bool failed = false;
+  try {
+    step();
+  } catch (const std::exception& e) {
+    message = e.what();
+    failed = true;
+  }
+  const auto comm = Tpetra::getDefaultComm();
+  const int mine = failed ? comm->getRank() : comm->getSize();
+  int first = 0;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, mine, Teuchos::outArg(first));
+  if (first == comm->getSize()) return;
+  int length = static_cast<int>(message.size());
+  Teuchos::broadcast(*comm, first, Teuchos::outArg(length));
+  std::vector<char> text(message.begin(), message.end());
+  text.resize(static_cast<std::size_t>(length));
+  if (length > 0) Teuchos::broadcast(*comm, first, length, text.data());
+  std::string shared(text.begin(), text.end());
+  if (comm->getSize() > 1) shared += " (on rank " + std::to_string(first) + ")";
+  throw CollectiveError(shared, first);
 }
 
 }  // namespace hmfnet

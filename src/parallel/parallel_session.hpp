@@ -2,10 +2,27 @@
 // MPI + Kokkos lifetime for the whole program (Tpetra::ScopeGuard behind a plain interface).
 // Create one in main() before any distributed object and let it outlive them all: without it,
 // `mpirun -np 2` silently runs two independent serial copies (TOOLCHAIN.md).
+#include <cstdint>
+#include <functional>
 #include <memory>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace hmfnet {
+
+/// An error every rank knows of: thrown on every rank by ParallelSession::agree with the message
+/// of the lowest rank that failed, so the program reports it once (on rank 0) and every rank
+/// exits with it instead of waiting for the failed one in the next collective.
+class CollectiveError : public std::runtime_error {
+ public:
+  CollectiveError(const std::string& message, int failed_rank)
+      : std::runtime_error(message), m_failed_rank(failed_rank) {}
+  int failed_rank() const { return m_failed_rank; }
+
+ private:
+  int m_failed_rank;
+};
 
 class ParallelSession {
  public:
@@ -22,6 +39,22 @@ class ParallelSession {
   static double max(double local);
   /// Element-wise sum over ranks, in place (one reduction for the whole vector).
   static void sum_in_place(std::vector<double>& values);
+  /// Element-wise sum modulo 2^64 (hash signatures), in place.
+  static void sum_in_place(std::vector<std::uint64_t>& values);
+
+  /// Point to point and from one rank to all (length travels first). Blocking.
+  static void send(const std::vector<std::int64_t>& values, int destination);
+  static std::vector<std::int64_t> receive(int source);
+  static void broadcast(std::vector<std::int64_t>& values, int root);
+
+  /// Each rank's peak resident memory so far (getrusage maxrss), in MB, indexed by rank, on
+  /// every rank. Collective.
+  static std::vector<double> peak_memory_mb();
+
+  /// Runs a step that may fail on some ranks only (a read of this rank's part of a file, an
+  /// allocation). Collective: when it throws on any rank, every rank throws CollectiveError with
+  /// the message of the lowest rank that failed; otherwise every rank returns normally.
+  static void agree(const std::function<void()>& step);
 
  private:
   struct Guard;

@@ -72,7 +72,7 @@ struct RawPair {
 template <class Manager>
 RawPair run_solver(const DistributedNetwork& network, Teuchos::ParameterList params, int nev = 1) {
   const auto& impl = tpetra_impl(network);
-  auto problem = Teuchos::rcp(new Problem(impl.matrix, start_vector(impl)));
+  auto problem = Teuchos::rcp(new Problem(adjacency_operator(network), start_vector(impl)));
   problem->setHermitian(true);
   problem->setNEV(nev);
   if (!problem->setProblem()) throw ConvergenceError("Anasazi rejected the eigenproblem set-up");
@@ -192,9 +192,16 @@ PerronResult perron_eigenpair(const DistributedNetwork& network, const PerronOpt
     // Krylov space becomes invariant and Anasazi throws (subView out of range, seen on a star of
     // 2000 nodes), and LOBPCG was seen to loop inside one iteration (SVQB orthogonalisation on
     // two cliques of 4 and 7 nodes). lambda_2 then stays NaN: unknown, said so by the summary.
+    // Only as tight as the acceptance below needs: Anasazi's test is relative to each pair's own
+    // eigenvalue, |lambda_2| <= lambda, so 1/10 of the accepted residual leaves room. At the
+    // lambda tolerance (1e-10) the second pair of a dense ER bulk edge cost nearly all of the
+    // time (N = 10^5, degree 100: 97 s).
+    Teuchos::ParameterList loose = krylov;
+    loose.set("Convergence Tolerance",
+              std::max(options.tolerance, 0.1 * k_second_eigenvalue_residual));
     RawPair two;
     try {
-      two = run_solver<Krylov>(network, krylov, 2);
+      two = run_solver<Krylov>(network, loose, 2);
     } catch (const std::exception&) {
       two.ok = false;
     }

@@ -91,9 +91,9 @@ TEST_CASE("K across replicas equals the restart-each-K run bit for bit [ER N=300
 TEST_CASE("K across replicas equals the restart-each-K run with the rank-one force [K_N]",
           "[replica_lanes]") {
   const Network net = test::complete(90);
-  auto structure = detect_rank_one(net);
-  REQUIRE(structure.has_value());
   const DistributedNetwork d(net);
+  auto structure = detect_rank_one(d);
+  REQUIRE(structure.has_value());
   RankOneForce force(*structure, d.first_row(), d.local_size());
   SimulationParameters p = sweep();
   p.K = {0.5, 2.0, 6.0, 10.0};

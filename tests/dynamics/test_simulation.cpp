@@ -88,9 +88,9 @@ TEST_CASE("Rank-one fast path equals the sparse path to 1e-12 [weighted a a^T an
   const Network weighted = Network::from_csr(n, full.row_ptr(), full.cols(), w);
   const Network unweighted = test::complete(n, false);
   for (const Network* net : {&weighted, &unweighted}) {
-    auto structure = detect_rank_one(*net);
-    REQUIRE(structure.has_value());
     const DistributedNetwork d(*net);
+    auto structure = detect_rank_one(d);
+    REQUIRE(structure.has_value());
     NetworkForce sparse(d);
     RankOneForce fast(*structure, d.first_row(), d.local_size());
     const RotorState s0 = initial_state(d.first_row(), d.local_size(), {{6.0, 1.0, 3}});
@@ -103,7 +103,13 @@ TEST_CASE("Rank-one fast path equals the sparse path to 1e-12 [weighted a a^T an
     INFO("max |sparse - rank-one| = " << worst);
     REQUIRE(worst < 1e-12);
   }
-  REQUIRE_FALSE(detect_rank_one(erdos_renyi({100, 0.5, 1})).has_value());
+  REQUIRE_FALSE(detect_rank_one(DistributedNetwork(erdos_renyi({100, 0.5, 1}))).has_value());
+  // Full rows whose weights are not a_i a_j: rejected on every rank (the weighted check is
+  // collective).
+  std::vector<double> skewed(std::size_t(full.nnz()), 1.0);
+  skewed.front() = 4.0;  // A_00 = 4 makes a_0 = 2, so A_01 = 1 != a_0 a_1 = 2
+  const Network not_rank_one = Network::from_csr(n, full.row_ptr(), full.cols(), skewed);
+  REQUIRE_FALSE(detect_rank_one(DistributedNetwork(not_rank_one)).has_value());
 }
 
 TEST_CASE("B replicas in one pass equal B separate runs bit for bit [ER N=300 B=3]",
@@ -474,7 +480,7 @@ TEST_CASE("K_N held implicitly runs the protocol as the stored graph does [N = 3
   const SimulationResult a = simulate(implicit, degrees, implicit_force, params);
 
   const DistributedNetwork rows(stored);
-  auto structure = detect_rank_one(stored);
+  auto structure = detect_rank_one(rows);
   REQUIRE(structure.has_value());
   RankOneForce detected(*structure, rows.first_row(), rows.local_size());
   const SimulationResult b = simulate(rows, degrees, detected, params);

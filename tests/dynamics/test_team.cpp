@@ -145,9 +145,9 @@ TEST_CASE("Sparse and rank-one forces: a team of 2 gives what one thread gives, 
 TEST_CASE("The rank-one force in a team of 2 is the sparse force of the complete graph", "[team]") {
   const ThreadCountScope two(2);
   const Network complete = test::complete(400, false);
-  auto structure = detect_rank_one(complete);
-  REQUIRE(structure.has_value());
   const DistributedNetwork d(complete);
+  auto structure = detect_rank_one(d);
+  REQUIRE(structure.has_value());
   RankOneForce rank_one(*structure, d.first_row(), d.local_size());
   NetworkForce sparse(d);
   const RotorState s = three_replicas(d);

@@ -8,34 +8,18 @@
 
 #include "io/hdf5_file.hpp"
 #include "io/network_hdf5.hpp"
+#include "network/erdos_renyi.hpp"
+#include "support/hdf5_corruption.hpp"
 #include "support/io_helpers.hpp"
 
 using namespace hmfnet;
 using Catch::Matchers::Contains;
 using hmfnet::test::input_error_from;
+using hmfnet::test::overwrite_dataset;
 using hmfnet::test::require_input_error;
 using hmfnet::test::TempDirectory;
 
 namespace {
-
-// Overwrites the whole of an existing 1-D dataset of a valid file, as a bit flip or a buggy
-// external tool would, with the raw C API (no hmfnet code involved).
-template <class T>
-void overwrite_dataset(const std::string& path, const std::string& name, const std::vector<T>& v,
-                       hid_t mem_type) {
-  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-  REQUIRE(file >= 0);
-  const hid_t set = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
-  REQUIRE(set >= 0);
-  const hid_t space = H5Dget_space(set);
-  hsize_t length = 0;
-  H5Sget_simple_extent_dims(space, &length, nullptr);
-  REQUIRE(length == v.size());
-  CHECK(H5Dwrite(set, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) >= 0);
-  H5Sclose(space);
-  H5Dclose(set);
-  H5Fclose(file);
-}
 
 void delete_object(const std::string& path, const std::string& name) {
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
@@ -457,4 +441,64 @@ TEST_CASE("HDF5 network reader refuses an unknown implicit structure and format 
   set_int_attribute(path, "/", "format_version", 3);
   require_input_error(input_error_from([&] { read_implicit_network_hdf5(path); }), path, 0,
                       "network format version 3 is not supported (1 or 2)");
+}
+
+namespace {
+
+// ER with symmetric weights w_ij = 1 + (i + j) mod 5, so a block that mixes up weights shows.
+Network weighted_er(NodeIndex n, double p, std::uint64_t seed) {
+  const Network net = erdos_renyi({n, p, seed});
+  std::vector<double> w;
+  for (NodeIndex i = 0; i < net.size(); ++i) {
+    for (const auto [j, unused] : net.row(i)) w.push_back(1.0 + double((i + j) % 5));
+  }
+  return Network::from_csr(net.size(), net.row_ptr(), net.cols(), w);
+}
+
+}  // namespace
+
+TEST_CASE("HDF5 row blocks read by hyperslabs are the rows of the whole network [ER, 1-5 parts]",
+          "[io][hdf5][row_block]") {
+  TempDirectory dir;
+  for (const bool weighted : {false, true}) {
+    const Network net = weighted ? weighted_er(700, 0.03, 4) : erdos_renyi({700, 0.03, 4});
+    const std::string path = dir.file(weighted ? "w.h5" : "u.h5");
+    write_network_hdf5(path, net);
+    for (int parts = 1; parts <= 5; ++parts) {
+      const auto starts = balanced_row_starts(net.row_ptr(), parts);
+      for (int p = 0; p < parts; ++p) {
+        const RowBlock block = read_network_hdf5_rows(path, p, parts);
+        const RowBlock expected = slice_rows(net, starts[std::size_t(p)],
+                                             starts[std::size_t(p) + 1] - starts[std::size_t(p)]);
+        INFO("weighted " << weighted << ", part " << p << " of " << parts);
+        CHECK(block.n == net.size());
+        CHECK(block.first_row == expected.first_row);
+        CHECK(block.row_ptr == expected.row_ptr);
+        CHECK(block.cols == expected.cols);
+        CHECK(block.weights == expected.weights);
+      }
+    }
+  }
+}
+
+TEST_CASE("HDF5 row blocks refuse a corrupted entry in the second block only, naming its row",
+          "[io][hdf5][row_block]") {
+  TempDirectory dir;
+  const std::string path = dir.file("net.h5");
+  const Network net = erdos_renyi({400, 0.05, 9});
+  write_network_hdf5(path, net);
+  std::vector<std::int32_t> cols = net.cols();
+  cols.back() = 400;  // the last row's last column: one past the last node
+  overwrite_dataset(path, "/network/col", cols, H5T_NATIVE_INT32);
+  CHECK_NOTHROW(read_network_hdf5_rows(path, 0, 2));
+  const auto e = input_error_from([&] { read_network_hdf5_rows(path, 1, 2); });
+  require_input_error(e, path, 0, "/network: column index 400 in row 399 out of range [0,400)");
+}
+
+TEST_CASE("HDF5 row blocks refuse a part outside [0, parts)", "[io][hdf5][row_block]") {
+  TempDirectory dir;
+  const std::string path = valid_file(dir);
+  CHECK_THROWS_AS(read_network_hdf5_rows(path, 2, 2), ParameterError);
+  CHECK_THROWS_AS(read_network_hdf5_rows(path, -1, 2), ParameterError);
+  CHECK_THROWS_AS(read_network_hdf5_rows(path, 0, 0), ParameterError);
 }

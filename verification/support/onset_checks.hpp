@@ -78,8 +78,9 @@ inline OnsetCurve check_onset(ClaimCheck& check, const std::string& name, const 
 ///     theory curves (the collapse the theory itself predicts, G differs between networks) plus
 ///     2 sqrt(2) x the largest fit se (~95% for the difference of two onsets).
 /// (c) they line up better than on the other axis; checked only where the two axes differ by
-///     more than that noise (max/min of the scale factor between them - 1 > 2 sqrt(2) max se),
-///     otherwise reported as not resolvable at this scale.
+///     more than that noise (max/min of the scale factor between them - 1 > 2 sqrt(2) max se)
+///     and the two measured spreads (max/min of the onsets on each axis) differ by more than it
+///     too, in either direction (a two-sided test); otherwise reported as not resolved.
 inline void check_lines_up(ClaimCheck& check, const std::string& family,
                            const std::vector<OnsetCurve>& curves, const std::vector<double>& other,
                            const std::string& axis) {
@@ -105,9 +106,18 @@ inline void check_lines_up(ClaimCheck& check, const std::string& family,
                              ClaimCheck::format(rel(K_other)) + " vs on " + axis + " " +
                              ClaimCheck::format(rel(xs)) + "; the axes differ by a factor " +
                              ClaimCheck::format(rel(scale));
-  if (rel(scale) - 1.0 > noise) {
-    check.holds(family + ": onsets do not line up on the other axis", rel(K_other) > rel(xs),
-                detail);
+  // The two spreads carry the same fit noise (K_other is x_on times a fixed factor), so their
+  // order is a result only when they differ by more than it; otherwise either verdict is a draw
+  // of the noise (at ci scale a round-off change of lambda flipped it: x_on 0.948 +- 0.044 vs
+  // 0.966 +- 0.150 for the same network).
+  const double margin = rel(K_other) - rel(xs);
+  if (rel(scale) - 1.0 > noise && std::abs(margin) > noise) {
+    check.holds(family + ": onsets do not line up on the other axis", margin > 0.0, detail);
+  } else if (rel(scale) - 1.0 > noise) {
+    check.report(family + ": which axis lines up better is not resolved at this scale",
+                 rel(K_other), rel(xs),
+                 "(" + detail + "; the spreads differ by " + ClaimCheck::format(margin) +
+                     ", within 2 sqrt2 max se " + ClaimCheck::format(noise) + ")");
   } else {
     check.report(family + ": other axis not resolvable at this scale", rel(K_other), rel(xs),
                  "(" + detail + " < 1 + 2 sqrt2 max se)");

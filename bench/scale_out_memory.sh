@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Peak resident memory per rank and wall time of `hmfnet spectrum` and `hmfnet simulate` (20
+# leap-frog steps) on ER N = 10^6, mean degree 100 (10^8 stored entries), read from hmfnet HDF5
+# by row blocks, on 1 and 2 MPI ranks (issue #15, item 3). Each rank reports its own peak
+# (getrusage) in the JSON (`peak_rss_mb_per_rank`); the budget is summed over the ranks:
+#   10 bytes per stored entry + 400 bytes per node + 250 MB per rank.
+# Usage: bench/scale_out_memory.sh [BUILD_DIR (default build)] [N (default 1000000)] [DEGREE]
+set -euo pipefail
+build=${1:-build}
+n=${2:-1000000}
+degree=${3:-100}
+hmfnet="$build/bin/hmfnet"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+net="$tmp/er.h5"
+/usr/bin/time -f "generate (1 rank, whole network): %e s, peak %M KB" \
+  "$hmfnet" generate er --n "$n" --mean-degree "$degree" --seed 1 -o "$net" >/dev/null
+report() {  # stage, ranks; JSON on stdin
+  python3 -c "
+import json, sys
+j = json.loads(sys.stdin.read().strip().splitlines()[-1])
+peak = j['peak_rss_mb_per_rank']
+nnz, n, ranks = j['nnz'], j['n'], len(peak)
+budget = (10 * nnz + 400 * n) / 2**20 + 250 * ranks
+print('%-9s %d rank(s): peak MB per rank %s, sum %.0f MB = %.2f bytes per stored entry '
+      '(budget %.0f MB)' % ('$1', ranks, ' '.join('%.0f' % p for p in peak), sum(peak),
+                           sum(peak) * 2**20 / nnz, budget))
+"
+}
+for ranks in 1 2; do
+  mpi=(mpirun --allow-run-as-root --oversubscribe -np "$ranks")
+  start=$(date +%s.%N)
+  "${mpi[@]}" "$hmfnet" spectrum "$net" --json | report spectrum
+  echo "          wall $(echo "$(date +%s.%N) - $start" | bc) s"
+  start=$(date +%s.%N)
+  "${mpi[@]}" "$hmfnet" simulate "$net" --seed 1 --K-over-Kc 2 --T 0.2 --transient 0 --json \
+    --quiet | report simulate
+  echo "          wall $(echo "$(date +%s.%N) - $start" | bc) s"
+done

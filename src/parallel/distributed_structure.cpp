@@ -1,0 +1,51 @@
+#include "parallel/distributed_structure.hpp"
+
+#include "network/parity_forest.hpp"
+#include "parallel/parallel_session.hpp"
+
+namespace hmfnet {
+
+namespace {
+
+ParityForest local_forest(const DistributedNetwork& network) {
+  ParityForest forest(network.global_size());
+  const auto& a = network.local_adjacency();
+  const std::vector<NodeIndex> globals = network.column_globals();
+  for (std::size_t r = 0; r + 1 < a.row_ptr.size(); ++r) {
+    const NodeIndex i = network.first_row() + static_cast<NodeIndex>(r);
+    for (auto k = static_cast<std::size_t>(a.row_ptr[r]);
+         k < static_cast<std::size_t>(a.row_ptr[r + 1]); ++k) {
+      const NodeIndex j = globals[static_cast<std::size_t>(a.cols[k])];
+      if (j >= i) forest.link(i, j);  // each pair once: (j, i) is the same link
+    }
+  }
+  return forest;
+}
+
+}  // namespace
+
+NetworkStructure distributed_structure(const DistributedNetwork& network) {
+  ParityForest forest = local_forest(network);
+  const int rank = ParallelSession::rank(), ranks = ParallelSession::ranks();
+  // Binary tree: at each level the right partner hands its forest to the left one and is done.
+  for (int step = 1; step < ranks; step *= 2) {
+    if (rank % (2 * step) == step) {
+      std::vector<std::int64_t> message = forest.labels();
+      message.push_back(forest.bipartite() ? 1 : 0);
+      ParallelSession::send(message, rank - step);
+      break;
+    }
+    if (rank % (2 * step) == 0 && rank + step < ranks) {
+      std::vector<std::int64_t> message = ParallelSession::receive(rank + step);
+      const bool bipartite = message.back() == 1;
+      message.pop_back();
+      forest.merge(message, bipartite);
+    }
+  }
+  std::vector<std::int64_t> facts{forest.components(), forest.largest(),
+                                  forest.bipartite() ? 1 : 0};
+  ParallelSession::broadcast(facts, 0);
+  return {static_cast<NodeIndex>(facts[0]), static_cast<NodeIndex>(facts[1]), facts[2] == 1};
+}
+
+}  // namespace hmfnet

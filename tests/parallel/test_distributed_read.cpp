@@ -1,0 +1,146 @@
+// Reading a network by row blocks over the ranks: equal to the replicated network on every rank
+// count, and an error found by one rank (a corrupted entry in its block, an asymmetric pair
+// across blocks) ends every rank with that one message. Run at 1, 2 and 3 ranks (label mpi).
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+
+#include "io/network_hdf5.hpp"
+#include "network/erdos_renyi.hpp"
+#include "parallel/distributed_read.hpp"
+#include "parallel/parallel_session.hpp"
+#include "spectral/perron.hpp"
+#include "support/hdf5_corruption.hpp"
+
+using namespace hmfnet;
+using Catch::Matchers::Contains;
+
+namespace {
+
+// One file name for all ranks of this run (their parent, mpirun, is shared), another for a
+// concurrent run at another rank count; rank 0 writes it and removes it.
+class SharedFile {
+ public:
+  explicit SharedFile(const std::string& stem)
+      : m_path((std::filesystem::temp_directory_path() /
+                (stem + "_" + std::to_string(::getppid()) + "_" +
+                 std::to_string(ParallelSession::ranks()) + ".h5"))
+                   .string()) {}
+  ~SharedFile() {
+    ParallelSession::sum(0.0);  // every rank is done with it
+    if (ParallelSession::rank() == 0) std::filesystem::remove(m_path);
+  }
+  SharedFile(const SharedFile&) = delete;
+  SharedFile& operator=(const SharedFile&) = delete;
+  const std::string& path() const { return m_path; }
+  /// Rank 0 writes (then `corrupt` runs on it); the others wait for it.
+  template <class Corrupt>
+  void write(const Network& net, Corrupt corrupt) const {
+    if (ParallelSession::rank() == 0) {
+      write_network_hdf5(m_path, net);
+      corrupt();
+    }
+    ParallelSession::sum(0.0);
+  }
+
+ private:
+  std::string m_path;
+};
+
+std::string collective_message(const std::function<void()>& step) {
+  try {
+    step();
+  } catch (const CollectiveError& e) {
+    return e.what();
+  }
+  return "(no CollectiveError)";
+}
+
+}  // namespace
+
+TEST_CASE(
+    "A network read by row blocks equals the replicated one on every rank count "
+    "[ER N=3000]",
+    "[distributed][read]") {
+  const Network net = erdos_renyi({3000, 0.01, 12});
+  const SharedFile file("hmfnet_read_blocks");
+  file.write(net, [] {});
+  const DistributedInput input = read_distributed_input(file.path());
+  REQUIRE(input.network);
+  CHECK_FALSE(input.complete.has_value());
+  const DistributedNetwork& read = *input.network;
+  const DistributedNetwork replicated(net);
+  INFO("rank " << ParallelSession::rank() << " of " << ParallelSession::ranks());
+  REQUIRE(read.first_row() == replicated.first_row());
+  REQUIRE(read.local_size() == replicated.local_size());
+  CHECK(read.global_nnz() == net.nnz());
+  CHECK(read.global_self_loops() == net.self_loops());
+  const auto& a = read.local_adjacency();
+  const auto& b = replicated.local_adjacency();
+  CHECK(a.row_ptr == b.row_ptr);
+  REQUIRE(a.cols.size() == b.cols.size());
+  // The rows' global columns are the network's own, ascending.
+  bool same = true;
+  for (NodeIndex r = 0; r < read.local_size(); ++r) {
+    const RowView row = net.row(read.first_row() + r);
+    auto k = static_cast<std::size_t>(a.row_ptr[std::size_t(r)]);
+    for (const auto entry : row) same = same && read.global_column(a.cols[k++]) == entry.col;
+  }
+  CHECK(same);
+  const auto degrees = read.gather(read.local_degrees());
+  CHECK(degrees == net.degrees());
+  // lambda through the adjacency operator: the same on every rank count to the solver's own
+  // tolerance (1e-12 relative residual is asked of the Perron pair: PerronOptions).
+  const double lambda_read = perron_eigenpair(read).lambda;
+  const double lambda_replicated = perron_eigenpair(replicated).lambda;
+  CHECK(std::abs(lambda_read - lambda_replicated) <= 1e-12 * lambda_replicated);
+}
+
+TEST_CASE("A corrupted entry in the last rank's block ends every rank with that rank's message",
+          "[distributed][read]") {
+  const Network net = erdos_renyi({600, 0.05, 5});
+  const SharedFile file("hmfnet_read_corrupt");
+  file.write(net, [&] {
+    std::vector<std::int32_t> cols = net.cols();
+    cols.back() = 600;  // the last row's last column, one past the last node
+    test::overwrite_dataset(file.path(), "/network/col", cols, H5T_NATIVE_INT32);
+  });
+  const std::string message = collective_message([&] { read_distributed_input(file.path()); });
+  INFO("rank " << ParallelSession::rank() << ": " << message);
+  CHECK_THAT(message, Contains(file.path()) && Contains("column index 600 in row 599"));
+  if (ParallelSession::ranks() > 1) {
+    CHECK_THAT(message, Contains("(on rank " + std::to_string(ParallelSession::ranks() - 1)));
+  }
+}
+
+TEST_CASE("An entry without its transpose across blocks is refused on every rank, naming a node",
+          "[distributed][read]") {
+  const Network net = erdos_renyi({600, 0.05, 5});
+  const SharedFile file("hmfnet_read_asymmetric");
+  // Row 0's last column moved one node up (kept sorted and in range unless already taken):
+  // (0, j) loses its transpose (j, 0), and (0, j + 1) has none, whichever blocks they sit in.
+  std::vector<std::int32_t> cols = net.cols();
+  const auto last_of_row_0 = static_cast<std::size_t>(net.row_end(0) - 1);
+  REQUIRE(cols[last_of_row_0] + 1 < 600);
+  REQUIRE_FALSE(net.has_entry(0, cols[last_of_row_0] + 1));
+  cols[last_of_row_0] += 1;
+  file.write(net,
+             [&] { test::overwrite_dataset(file.path(), "/network/col", cols, H5T_NATIVE_INT32); });
+  const std::string message = collective_message([&] { read_distributed_input(file.path()); });
+  INFO("rank " << ParallelSession::rank() << ": " << message);
+  CHECK_THAT(message, Contains(file.path()) && Contains("not symmetric") &&
+                          Contains("row 0 and column 0 differ"));
+}
+
+TEST_CASE("agree: a failure on one rank reaches every rank; no failure, no error",
+          "[distributed][read]") {
+  CHECK_NOTHROW(ParallelSession::agree([] {}));
+  const int last = ParallelSession::ranks() - 1;
+  const std::string message = collective_message([&] {
+    ParallelSession::agree([&] {
+      if (ParallelSession::rank() == last) throw std::runtime_error("only the last rank fails");
+    });
+  });
+  CHECK_THAT(message, Contains("only the last rank fails"));
+}
