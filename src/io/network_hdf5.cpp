@@ -154,6 +154,10 @@ RowBlock read_network_hdf5_rows(const std::string& path, int part, int parts) {
               " entries, expected n+1 = " + std::to_string(std::int64_t{block.n} + 1));
   }
   require_bounded_row_ptr(file, row_ptr, nnz);
+  // Blocks are read relative to their first pointer, so a shifted array would go unnoticed.
+  if (row_ptr.front() != 0) {
+    file.fail("/network: row_ptr[0] = " + std::to_string(row_ptr.front()) + ", not 0");
+  }
   if (row_ptr.back() != nnz) {
     file.fail("/network: row_ptr[n] = " + std::to_string(row_ptr.back()) + " but there are " +
               std::to_string(nnz) + " column indices");

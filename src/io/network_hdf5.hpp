@@ -27,7 +27,7 @@ ReadResult read_network_hdf5(const std::string& path);
 /// Block `part` of `parts` of a CSR network file (0 <= part < parts): the rows
 /// balanced_row_starts gives it, read by hyperslabs, so a rank holds O(N) pointers and its own
 /// entries only. Every per-row invariant is checked (InputError naming the file); symmetry spans
-/// the blocks: check it with require_symmetric (parallel/row_block_checks.hpp, collective).
+/// the blocks: check it with require_symmetric (parallel/distributed_read.hpp, collective).
 /// Not collective itself: every rank opens the file read-only on its own.
 RowBlock read_network_hdf5_rows(const std::string& path, int part, int parts);
 

@@ -75,7 +75,7 @@ class RowView {
 /// network of n nodes (columns in [0, n), strictly increasing within a row, weights finite and
 /// > 0), or an empty string. row_ptr is local (row_ptr[0] = 0) and already bounded by cols.size().
 /// Symmetry spans rows, so it is not checked here (Network::check_csr; across ranks,
-/// require_symmetric in parallel/row_block_checks.hpp).
+/// require_symmetric in parallel/distributed_read.hpp).
 std::string check_row_entries(NodeIndex n, NodeIndex first_row,
                               const std::vector<EdgeOffset>& row_ptr,
                               const std::vector<NodeIndex>& cols,

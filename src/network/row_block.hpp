@@ -6,7 +6,9 @@
 //
 // The blocks of a network are contiguous and cover the rows in rank order; balanced_row_starts
 // cuts them so that every rank holds about the same number of stored entries (a hub's row is
-// never split, so a rank may hold more than nnz / parts by at most one row).
+// never split, so a rank may hold more than nnz / parts by at most one row, and a later rank may
+// be left with no rows when one row holds more than its share: a star whose hub is the last
+// node, on 3 ranks, gives blocks of 666, 334 and 0 rows).
 #include <functional>
 #include <string>
 #include <vector>

@@ -82,6 +82,14 @@ class AdjacencyOperator final : public TpetraOperator {
   void apply(const TpetraMultiVector& X, TpetraMultiVector& Y, Teuchos::ETransp /*mode*/,
              double alpha, double beta) const override {
     const size_t width = X.getNumVectors();
+    if (!X.isConstantStride() || !Y.isConstantStride()) {
+      // A view of chosen columns: the host view below would index the parent's columns, so
+      // take one vector (constant stride) at a time.
+      for (size_t v = 0; v < width; ++v) {
+        apply(*X.getVector(v), *Y.getVectorNonConst(v), Teuchos::NO_TRANS, alpha, beta);
+      }
+      return;
+    }
     const TpetraMultiVector* source = &X;
     if (!m_impl.identity_import) {
       if (m_columns.is_null() || m_columns->getNumVectors() != width) {

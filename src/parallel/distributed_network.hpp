@@ -28,7 +28,7 @@ class DistributedNetwork {
   /// Takes over this rank's block. Collective: the blocks must be those of
   /// balanced_row_starts-style cuts, contiguous and in rank order (a block out of place is
   /// refused on every rank). Symmetry across blocks is the caller's to check
-  /// (require_symmetric, parallel/row_block_checks.hpp).
+  /// (require_symmetric, parallel/distributed_read.hpp).
   explicit DistributedNetwork(RowBlock block);
   /// The row blocks of K_N over the ranks, and no stored rows. Collective.
   explicit DistributedNetwork(const CompleteGraph& graph);

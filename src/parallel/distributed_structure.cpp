@@ -25,6 +25,10 @@ ParityForest local_forest(const DistributedNetwork& network) {
 }  // namespace
 
 NetworkStructure distributed_structure(const DistributedNetwork& network) {
+  if (!network.stores_rows()) {  // K_N held implicitly: one component; an odd cycle once n > 2
+    const NodeIndex n = network.global_size();
+    return {1, n, n == 2 && network.global_self_loops() == 0};
+  }
   ParityForest forest = local_forest(network);
   const int rank = ParallelSession::rank(), ranks = ParallelSession::ranks();
   // Binary tree: at each level the right partner hands its forest to the left one and is done.

@@ -134,6 +134,34 @@ Teuchos::ParameterList common_parameters(const PerronOptions& options) {
   return params;
 }
 
+// Column j of A on every rank (one product with the unit vector e_j).
+std::vector<double> column_of(const DistributedNetwork& network, NodeIndex j) {
+  std::vector<double> e(static_cast<std::size_t>(network.local_size()), 0.0), a;
+  const NodeIndex r = j - network.first_row();
+  if (r >= 0 && r < network.local_size()) e[static_cast<std::size_t>(r)] = 1.0;
+  network.apply(e, a);
+  return network.gather(a);
+}
+
+// Krylov-Schur needs a basis of at least 3 vectors, more than a 1- or 2-node network has (found
+// with a 2-node network: Anasazi refuses "impossible orthogonality requests"): its symmetric
+// 2 x 2 matrix [[a, b], [b, d]] has the closed form lambda = (a + d)/2 + sqrt(((a - d)/2)^2 + b^2).
+RawPair tiny_pair(const DistributedNetwork& network) {
+  RawPair raw;
+  raw.ok = true;
+  if (network.global_size() == 1) {
+    raw.lambda = column_of(network, 0)[0];
+    raw.u = {1.0};
+    return raw;
+  }
+  const std::vector<double> first = column_of(network, 0), second = column_of(network, 1);
+  const double a = first[0], b = first[1], d = second[1];
+  raw.lambda = 0.5 * (a + d) + std::hypot(0.5 * (a - d), b);
+  raw.u = b != 0.0 ? std::vector<double>{b, raw.lambda - a}
+                   : (a >= d ? std::vector<double>{1.0, 0.0} : std::vector<double>{0.0, 1.0});
+  return raw;
+}
+
 }  // namespace
 
 PerronResult perron_eigenpair(const DistributedNetwork& network, const PerronOptions& options) {
@@ -154,7 +182,8 @@ PerronResult perron_eigenpair(const DistributedNetwork& network, const PerronOpt
   krylov.set("Num Blocks", std::min(options.num_blocks, std::max(3, network.global_size() - 1)));
   using Krylov = Anasazi::BlockKrylovSchurSolMgr<double, TpetraMultiVector, TpetraOperator>;
   using Lobpcg = Anasazi::LOBPCGSolMgr<double, TpetraMultiVector, TpetraOperator>;
-  RawPair raw = run_solver<Krylov>(network, krylov);
+  RawPair raw =
+      network.global_size() <= 2 ? tiny_pair(network) : run_solver<Krylov>(network, krylov);
   double residual = 0.0;
   bool nonnegative = true;
   if (raw.ok) {

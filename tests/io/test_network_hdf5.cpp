@@ -502,3 +502,15 @@ TEST_CASE("HDF5 row blocks refuse a part outside [0, parts)", "[io][hdf5][row_bl
   CHECK_THROWS_AS(read_network_hdf5_rows(path, -1, 2), ParameterError);
   CHECK_THROWS_AS(read_network_hdf5_rows(path, 0, 0), ParameterError);
 }
+
+TEST_CASE("HDF5 row blocks refuse row pointers that do not start at 0 [shifted row_ptr]",
+          "[io][hdf5][row_block]") {
+  TempDirectory dir;
+  const std::string path = valid_file(dir);
+  std::vector<std::int64_t> row_ptr = read_network_hdf5(path).network.row_ptr();
+  REQUIRE(row_ptr[1] >= 1);
+  row_ptr[0] = 1;  // row 0 loses its first entry: the blocks read relative to it would not see it
+  overwrite_dataset(path, "/network/row_ptr", row_ptr, H5T_NATIVE_INT64);
+  const auto e = input_error_from([&] { read_network_hdf5_rows(path, 0, 1); });
+  require_input_error(e, path, 0, "/network: row_ptr[0] = 1, not 0");
+}

@@ -1,5 +1,6 @@
 // Structure and summary from row blocks: components, the largest one, bipartiteness (merged
 // parity forests) and rho equal the serial answers on every rank count (label mpi: 1-3 ranks).
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -9,6 +10,7 @@
 #include "network/structure.hpp"
 #include "parallel/distributed_structure.hpp"
 #include "parallel/parallel_session.hpp"
+#include "spectral/perron.hpp"
 #include "support/small_networks.hpp"
 
 using namespace hmfnet;
@@ -37,4 +39,38 @@ TEST_CASE(
   CHECK(std::abs(s.rho - degree_correlation(er)) <= 1e-13 * degree_correlation(er));
   CHECK(s.mean_degree == Approx(mean_degree(er)).epsilon(1e-14));
   CHECK(s.edges == er.edges());
+}
+
+TEST_CASE(
+    "A trailing hub leaves the last rank without rows, and products, structure and lambda "
+    "still agree [star N=1000 with the hub last, pair N=2]",
+    "[distributed][summary]") {
+  std::vector<std::pair<NodeIndex, NodeIndex>> spokes;
+  for (NodeIndex i = 0; i < 999; ++i) spokes.emplace_back(i, 999);
+  const Network star = Network::from_undirected_edges(1000, spokes);
+  const Network pair = Network::from_undirected_edges(2, {{0, 1}});
+  for (const Network* net : {&star, &pair}) {
+    const DistributedNetwork d(*net);
+    INFO("ranks " << ParallelSession::ranks() << ", N = " << net->size() << ", rows here "
+                  << d.local_size());
+    std::vector<double> x_local(std::size_t(d.local_size())), y_local;
+    for (std::size_t r = 0; r < x_local.size(); ++r)
+      x_local[r] = 1.0 + double(d.first_row()) + double(r);
+    d.apply(x_local, y_local);
+    const std::vector<double> y = d.gather(y_local);
+    double worst = 0.0;
+    for (NodeIndex i = 0; i < net->size(); ++i) {
+      double s = 0.0;
+      for (const auto [j, w] : net->row(i)) s += w * (1.0 + double(j));
+      worst = std::max(worst, std::abs(s - y[std::size_t(i)]));
+    }
+    CHECK(worst <= 1e-9);  // sums of at most 999 integers below 1000: exact in double
+    const NetworkStructure s = distributed_structure(d);
+    CHECK(s.components == 1);
+    CHECK(s.largest == net->size());
+    CHECK(s.bipartite);
+    // lambda of a star S_N: sqrt(N - 1) (the pair is S_2).
+    const double expected = std::sqrt(double(net->size() - 1));
+    CHECK(std::abs(perron_eigenpair(d).lambda - expected) <= 1e-10 * expected);
+  }
 }
