@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Peak resident memory per rank and wall time of `hmfnet spectrum` and `hmfnet simulate` (20
-# leap-frog steps) on ER N = 10^6, mean degree 100 (10^8 stored entries), read from hmfnet HDF5
-# by row blocks, on 1 and 2 MPI ranks (issue #15, item 3). Each rank reports its own peak
+# Peak resident memory per rank and wall time of `hmfnet generate er` (by rows over the ranks,
+# into hmfnet HDF5), `hmfnet spectrum`, `hmfnet theory` (three K) and `hmfnet simulate` (20
+# leap-frog steps) on ER
+# N = 10^6, mean degree 100 (10^8 stored entries), read by row blocks, on 1 and 2 MPI ranks
+# (issue #15, items 2 and 3). Each rank reports its own peak
 # (getrusage) in the JSON (`peak_rss_mb_per_rank`); the budget is summed over the ranks:
 #   10 bytes per stored entry + 400 bytes per node + 250 MB per rank.
 # Usage: bench/scale_out_memory.sh [BUILD_DIR (default build)] [N (default 1000000)] [DEGREE]
@@ -13,12 +15,16 @@ hmfnet="$build/bin/hmfnet"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 net="$tmp/er.h5"
-/usr/bin/time -f "generate (1 rank, whole network): %e s, peak %M KB" \
-  "$hmfnet" generate er --n "$n" --mean-degree "$degree" --seed 1 -o "$net" >/dev/null
-report() {  # stage, ranks; JSON on stdin
+report() {  # stage; JSON on stdin (for generate: its report line, turned into the same fields)
   python3 -c "
-import json, sys
-j = json.loads(sys.stdin.read().strip().splitlines()[-1])
+import json, re, sys
+text = sys.stdin.read().strip().splitlines()[-1]
+if '$1' == 'generate':
+    m = re.search(r'N = (\d+), edges = (\d+).*peak memory per rank, MB: ([\d ]+)\)', text)
+    j = {'n': int(m.group(1)), 'nnz': 2 * int(m.group(2)),
+         'peak_rss_mb_per_rank': [float(x) for x in m.group(3).split()]}
+else:
+    j = json.loads(text)
 peak = j['peak_rss_mb_per_rank']
 nnz, n, ranks = j['nnz'], j['n'], len(peak)
 budget = (10 * nnz + 400 * n) / 2**20 + 250 * ranks
@@ -30,7 +36,14 @@ print('%-9s %d rank(s): peak MB per rank %s, sum %.0f MB = %.2f bytes per stored
 for ranks in 1 2; do
   mpi=(mpirun --allow-run-as-root --oversubscribe -np "$ranks")
   start=$(date +%s.%N)
+  "${mpi[@]}" "$hmfnet" generate er --n "$n" --mean-degree "$degree" --seed 1 -o "$net" 2>&1 |
+    report generate
+  echo "          wall $(echo "$(date +%s.%N) - $start" | bc) s"
+  start=$(date +%s.%N)
   "${mpi[@]}" "$hmfnet" spectrum "$net" --json | report spectrum
+  echo "          wall $(echo "$(date +%s.%N) - $start" | bc) s"
+  start=$(date +%s.%N)
+  "${mpi[@]}" "$hmfnet" theory "$net" --sigma0 1 --K-over-Kc 1.5,2,4 --json | report theory
   echo "          wall $(echo "$(date +%s.%N) - $start" | bc) s"
   start=$(date +%s.%N)
   "${mpi[@]}" "$hmfnet" simulate "$net" --seed 1 --K-over-Kc 2 --T 0.2 --transient 0 --json \

@@ -35,6 +35,17 @@ void add_spectrum(NetworkSummary& s, const PerronResult& perron, double sigma0) 
   if (perron.lambda2 != 0.0) s.second_mode_ratio = perron.lambda / perron.lambda2;
   if (perron.lambda2 < perron.lambda)  // false for NaN and for a degenerate lambda (no gap)
     s.eigenvector_error_bound = perron.residual * perron.lambda / (perron.lambda - perron.lambda2);
+  if (std::isnan(perron.lambda2) && std::isfinite(perron.lambda2_upper)) {
+    s.lambda2_lower = perron.lambda2_lower;
+    s.lambda2_upper = perron.lambda2_upper;
+    s.lambda2_bound_failure = perron.lambda2_bound_failure;
+    s.lambda2_bound_steps = perron.lambda2_bound_steps;
+    if (perron.lambda2_upper > 0.0) s.second_mode_ratio = perron.lambda / perron.lambda2_upper;
+    if (perron.lambda2_upper < perron.lambda) {
+      s.eigenvector_error_bound =
+          perron.residual * perron.lambda / (perron.lambda - perron.lambda2_upper);
+    }
+  }
   s.eigen_iterations = perron.iterations;
   s.eigen_seconds = perron.seconds;
   s.G = onset_amplitude(perron.lambda, s.mean_degree, perron.u);
@@ -160,6 +171,13 @@ std::string to_json(const NetworkSummary& s) {
   if (std::isfinite(s.lambda2)) {
     j["lambda2"] = s.lambda2;
     if (std::isfinite(s.second_mode_ratio)) j["second_mode_ratio"] = s.second_mode_ratio;
+    if (std::isfinite(s.eigenvector_error_bound))
+      j["eigenvector_error_bound"] = s.eigenvector_error_bound;
+  } else if (std::isfinite(s.lambda2_upper)) {
+    j["lambda2_bounds"] = {s.lambda2_lower, s.lambda2_upper};
+    j["lambda2_bound_failure_probability"] = s.lambda2_bound_failure;
+    j["lambda2_bound_steps"] = s.lambda2_bound_steps;
+    if (std::isfinite(s.second_mode_ratio)) j["second_mode_ratio_at_least"] = s.second_mode_ratio;
     if (std::isfinite(s.eigenvector_error_bound))
       j["eigenvector_error_bound"] = s.eigenvector_error_bound;
   }

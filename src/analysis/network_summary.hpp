@@ -35,6 +35,13 @@ struct NetworkSummary {
   double lambda2 = std::numeric_limits<double>::quiet_NaN();
   double second_mode_ratio = std::numeric_limits<double>::quiet_NaN();
   double eigenvector_error_bound = std::numeric_limits<double>::quiet_NaN();  ///< NaN: no gap
+  /// When lambda_2 was bounded instead of converged (PerronOptions::bound_lambda2_first): its
+  /// bounds, the upper one with probability >= 1 - lambda2_bound_failure over the seeded start,
+  /// and what they imply (second_mode_ratio >= lambda / upper; the error bound uses upper).
+  double lambda2_lower = std::numeric_limits<double>::quiet_NaN();
+  double lambda2_upper = std::numeric_limits<double>::quiet_NaN();
+  double lambda2_bound_failure = 0.0;
+  int lambda2_bound_steps = 0;
   int eigen_iterations = 0;
   double eigen_seconds = 0.0;
   double G = 0.0;

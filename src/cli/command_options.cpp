@@ -25,9 +25,13 @@ void ReadFlags::add_to(CLI::App* command) {
       ->check(k_non_negative);
 }
 
-void add_generate_options(CLI::App& app, ErFlags& er, SfFlags& sf, CompleteFlags& complete,
-                          const Run& run_er, const Run& run_sf, const Run& run_complete) {
-  auto* gen = app.add_subcommand("generate", "Generate a network (er | sf | complete)");
+void add_generate_options(CLI::App& app, GenerateFlags& flags, const GenerateRuns& runs) {
+  auto& er = flags.er;
+  auto& sf = flags.sf;
+  auto& complete = flags.complete;
+  const auto& run_er = runs.er;
+  const auto& run_sf = runs.sf;
+  auto* gen = app.add_subcommand("generate", "Generate a network (er | sf | sbm | complete)");
   gen->require_subcommand(1);
 
   auto* e = gen->add_subcommand("er", "Erdos-Renyi G(N, q): each pair linked with probability q");
@@ -72,6 +76,22 @@ void add_generate_options(CLI::App& app, ErFlags& er, SfFlags& sf, CompleteFlags
     run_sf();
   });
 
+  auto& sbm = flags.sbm;
+  auto* b = gen->add_subcommand(
+      "sbm", "Two-block stochastic block model: 2 half nodes, p_in inside a block, p_out between");
+  b->add_option("--half", sbm.half, "Nodes per block")
+      ->required()
+      ->check(CLI::Range(1, 1073741823));
+  b->add_option("--p-in", sbm.p_in, "Link probability inside a block")
+      ->required()
+      ->check(k_probability);
+  b->add_option("--p-out", sbm.p_out, "Link probability between the blocks")
+      ->required()
+      ->check(k_probability);
+  b->add_option("--seed", sbm.seed, "Random seed")->required()->check(k_seed);
+  b->add_option("-o,--output", sbm.output, "Output file (.mtx, .h5 or edge list .txt)")->required();
+  b->callback(runs.sbm);
+
   auto* c = gen->add_subcommand(
       "complete", "The complete graph K_N (all-to-all HMF), stored in O(1) space (.h5 only)");
   c->add_option("--n", complete.n, "Number of nodes")
@@ -79,7 +99,7 @@ void add_generate_options(CLI::App& app, ErFlags& er, SfFlags& sf, CompleteFlags
       ->check(CLI::Range(std::int64_t{2}, std::int64_t{2147483647}));
   c->add_flag("--self-loops", complete.self_loops, "Also A_nn = 1 (A = 1 1^T, lambda = N)");
   c->add_option("-o,--output", complete.output, "Output file (.h5)")->required();
-  c->callback(run_complete);
+  c->callback(runs.complete);
 }
 
 void add_rewire_options(CLI::App& app, RewireFlags& f, const Run& run) {
@@ -106,6 +126,11 @@ void add_spectrum_options(CLI::App& app, SpectrumFlags& f, const Run& run) {
       ->check(k_positive);
   c->add_option("--tolerance", f.tolerance, "Relative eigen-residual tolerance")
       ->check(closed_range(1e-15, 1e-2));
+  c->add_option("--lambda2", f.lambda2,
+                "lambda_2: converged (to 1e-6), bound (Lanczos bounds that settle "
+                "lambda / lambda_2 > 1.1, converged only if they do not), or auto (converged up "
+                "to 4 10^6 stored entries; default)")
+      ->check(CLI::IsMember({"auto", "converged", "bound"}));
   f.read.add_to(c);
   c->callback(run);
 }

@@ -42,6 +42,14 @@ struct SfFlags {
   std::string output;
 };
 
+struct SbmFlags {
+  int half = 0;
+  double p_in = 0.0;
+  double p_out = 0.0;
+  std::uint64_t seed = 0;
+  std::string output;
+};
+
 struct RewireFlags {
   std::string input;
   double target_rho = 0.0;
@@ -56,6 +64,7 @@ struct SpectrumFlags {
   bool json = false;
   double sigma0 = 0.0;
   double tolerance = 1e-10;
+  std::string lambda2 = "auto";
   ReadFlags read;
 };
 
@@ -100,8 +109,16 @@ struct DemoFlags {
 /// The top-level app: version flag, one subcommand required, one-line errors.
 void configure_app(CLI::App& app);
 
-void add_generate_options(CLI::App& app, ErFlags& er, SfFlags& sf, CompleteFlags& complete,
-                          const Run& run_er, const Run& run_sf, const Run& run_complete);
+struct GenerateFlags {
+  ErFlags er;
+  SfFlags sf;
+  SbmFlags sbm;
+  CompleteFlags complete;
+};
+struct GenerateRuns {
+  Run er, sf, sbm, complete;
+};
+void add_generate_options(CLI::App& app, GenerateFlags& flags, const GenerateRuns& runs);
 void add_rewire_options(CLI::App& app, RewireFlags& f, const Run& run);
 void add_spectrum_options(CLI::App& app, SpectrumFlags& f, const Run& run);
 void add_theory_options(CLI::App& app, TheoryFlags& f, const Run& run);

@@ -217,6 +217,16 @@ void run(const SimulateFlags& f) {
   out["ranks"] = ParallelSession::ranks();
   const std::vector<double> peak_mb = ParallelSession::peak_memory_mb();
   out["peak_rss_mb_per_rank"] = peak_mb;
+  // What each force evaluation imports: [cos, sin] of every lane for each ghost column, as
+  // doubles (issue #15 items 4 and 6: the communication per step against the rank count).
+  std::vector<double> ghosts(static_cast<std::size_t>(ParallelSession::ranks()), 0.0);
+  ghosts[static_cast<std::size_t>(ParallelSession::rank())] =
+      static_cast<double>(distributed->ghost_count());
+  ParallelSession::sum_in_place(ghosts);
+  out["ghosts_per_rank"] = ghosts;
+  std::vector<double> bytes = ghosts;
+  for (double& b : bytes) b *= 2.0 * static_cast<double>(result.lanes) * sizeof(double);
+  out["bytes_imported_per_evaluation_per_rank"] = bytes;
   for (const auto& p : result.points) out["points"].push_back(point_json(p, Kc));
   if (!f.output.empty()) {
     RunMetadata meta;

@@ -23,6 +23,7 @@
 #include "core/error.hpp"
 #include "network/degree_statistics.hpp"
 #include "parallel/distributed_network.hpp"
+#include "parallel/parallel_session.hpp"
 #include "spectral/perron.hpp"
 #include "theory/critical_coupling.hpp"
 #include "theory/growth_rate.hpp"
@@ -162,6 +163,8 @@ void run(const TheoryFlags& f) {
   const TheoryNetwork net = theory_network(input);
   const Network& solved = net.solved();
   const PerronResult& perron = net.solved_pair;
+  // Collective, so before rank 0 goes on alone; its own entry is updated after the solves.
+  std::vector<double> peak_mb = ParallelSession::peak_memory_mb();
   if (!is_root()) return;
   // Step 2: K_c, G, the couplings asked for.
   TheoryReport t;
@@ -186,7 +189,12 @@ void run(const TheoryFlags& f) {
   t.large_k = solve_large_k_limit(solved, options);
   t.R_hat_degree = degree_approximation_R_hat(solved.degrees());
   if (f.json) {
-    std::cout << to_json(t, f, net.n).dump() << std::endl;
+    nlohmann::json j = to_json(t, f, net.n);
+    j["nnz"] = input.complete() != nullptr ? input.complete()->nnz() : input.stored().nnz();
+    j["ranks"] = ParallelSession::ranks();
+    peak_mb.front() = ParallelSession::own_peak_memory_mb();
+    j["peak_rss_mb_per_rank"] = peak_mb;
+    std::cout << j.dump() << std::endl;
   } else {
     print_text(t, f);
   }

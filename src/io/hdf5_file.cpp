@@ -58,10 +58,12 @@ Hdf5File::Hdf5File(const std::string& path, Mode mode) : m_path(path) {
   if (mode == Mode::read) {
     if (H5Fis_hdf5(path.c_str()) <= 0) fail("not an HDF5 file (or cannot be read)");
     m_file = H5Id(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  } else if (mode == Mode::update) {
+    m_file = H5Id(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose);
   } else {
     m_file = H5Id(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
   }
-  if (m_file.get() < 0) fail(mode == Mode::read ? "cannot open" : "cannot create");
+  if (m_file.get() < 0) fail(mode == Mode::create ? "cannot create" : "cannot open");
 }
 
 void Hdf5File::fail(const std::string& cause) const { throw InputError(m_path, 0, cause); }
@@ -130,6 +132,49 @@ void Hdf5File::write_strings(hid_t where, const std::string& name,
       H5Dwrite(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data()) < 0) {
     fail("cannot write dataset " + name);
   }
+}
+
+void Hdf5File::create_dataset(hid_t where, const std::string& name, hid_t file_type,
+                              std::size_t length) const {
+  const hsize_t dims[1] = {length_of(length)};
+  H5Id space(H5Screate_simple(1, dims, nullptr), H5Sclose);
+  H5Id set(H5Dcreate2(where, name.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT,
+                      H5P_DEFAULT),
+           H5Dclose);
+  if (set.get() < 0) fail("cannot create dataset " + name);
+}
+
+namespace {
+template <class T>
+void write_range_of(const Hdf5File& f, hid_t where, const std::string& name, std::size_t first,
+                    const std::vector<T>& v, hid_t mem_type) {
+  if (v.empty()) return;
+  H5Id set(H5Dopen2(where, name.c_str(), H5P_DEFAULT), H5Dclose);
+  if (set.get() < 0) f.fail("cannot open dataset " + name);
+  H5Id file_space(H5Dget_space(set.get()), H5Sclose);
+  const hsize_t start[1] = {static_cast<hsize_t>(first)};
+  const hsize_t length[1] = {length_of(v.size())};
+  H5Id memory_space(H5Screate_simple(1, length, nullptr), H5Sclose);
+  if (H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, length, nullptr) < 0 ||
+      H5Dwrite(set.get(), mem_type, memory_space.get(), file_space.get(), H5P_DEFAULT, v.data()) <
+          0) {
+    f.fail("cannot write elements [" + std::to_string(first) + ", " +
+           std::to_string(first + v.size()) + ") of dataset " + name);
+  }
+}
+}  // namespace
+
+void Hdf5File::write_range(hid_t where, const std::string& name, std::size_t first,
+                           const std::vector<std::int64_t>& v) const {
+  write_range_of(*this, where, name, first, v, H5T_NATIVE_INT64);
+}
+void Hdf5File::write_range(hid_t where, const std::string& name, std::size_t first,
+                           const std::vector<std::int32_t>& v) const {
+  write_range_of(*this, where, name, first, v, H5T_NATIVE_INT32);
+}
+void Hdf5File::write_range(hid_t where, const std::string& name, std::size_t first,
+                           const std::vector<double>& v) const {
+  write_range_of(*this, where, name, first, v, H5T_NATIVE_DOUBLE);
 }
 
 std::vector<std::string> Hdf5File::read_strings(hid_t where, const std::string& name) const {

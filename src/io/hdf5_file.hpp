@@ -28,8 +28,9 @@ class H5Id {
 
 class Hdf5File {
  public:
-  enum class Mode { read, create };
-  /// `create` truncates; callers write to an AtomicFile's temporary path.
+  enum class Mode { read, create, update };
+  /// `create` truncates; callers write to an AtomicFile's temporary path. `update` opens an
+  /// existing file for writing (the ranks that fill a file created by one of them, in turn).
   Hdf5File(const std::string& path, Mode mode);
   const std::string& path() const { return m_path; }
   hid_t id() const { return m_file.get(); }
@@ -42,6 +43,17 @@ class Hdf5File {
   void write(hid_t where, const std::string& name, const std::vector<std::int64_t>& v) const;
   void write(hid_t where, const std::string& name, const std::vector<std::int32_t>& v) const;
   void write(hid_t where, const std::string& name, const std::vector<double>& v) const;
+  /// A 1-D dataset of `length` values of `file_type` (H5T_STD_I64LE, H5T_STD_I32LE,
+  /// H5T_IEEE_F64LE), filled later by write_range.
+  void create_dataset(hid_t where, const std::string& name, hid_t file_type,
+                      std::size_t length) const;
+  /// Writes v into elements [first, first + v.size()) of an existing 1-D dataset (a hyperslab).
+  void write_range(hid_t where, const std::string& name, std::size_t first,
+                   const std::vector<std::int64_t>& v) const;
+  void write_range(hid_t where, const std::string& name, std::size_t first,
+                   const std::vector<std::int32_t>& v) const;
+  void write_range(hid_t where, const std::string& name, std::size_t first,
+                   const std::vector<double>& v) const;
   std::vector<std::int64_t> read_int64(hid_t where, const std::string& name) const;
   std::vector<std::int32_t> read_int32(hid_t where, const std::string& name) const;
   std::vector<double> read_double(hid_t where, const std::string& name) const;

@@ -184,6 +184,17 @@ RowBlock read_network_hdf5_rows(const std::string& path, int part, int parts) {
   return block;
 }
 
+namespace {
+void write_network_attributes(const Hdf5File& file, hid_t group, const NetworkTotals& totals) {
+  file.set_attribute(group, "n", static_cast<std::int64_t>(totals.n));
+  file.set_attribute(group, "nnz", totals.nnz);
+  // Every off-diagonal edge is stored twice, a self-loop once.
+  file.set_attribute(group, "edges", (totals.nnz + totals.self_loops) / 2);
+  file.set_attribute(group, "self_loops", totals.self_loops);
+  file.set_attribute(group, "weighted", static_cast<std::int64_t>(totals.weighted));
+}
+}  // namespace
+
 void write_network_hdf5(const std::string& path, const Network& network,
                         const std::string& provenance) {
   AtomicFile out(path);
@@ -191,17 +202,43 @@ void write_network_hdf5(const std::string& path, const Network& network,
     const Hdf5File file(out.temp_path(), Hdf5File::Mode::create);
     write_root_attributes(file, k_csr_version, provenance);
     const H5Id group = file.create_group("network");
-    file.set_attribute(group.get(), "n", static_cast<std::int64_t>(network.size()));
-    file.set_attribute(group.get(), "nnz", static_cast<std::int64_t>(network.nnz()));
-    file.set_attribute(group.get(), "edges", static_cast<std::int64_t>(network.edges()));
-    file.set_attribute(group.get(), "self_loops", static_cast<std::int64_t>(network.self_loops()));
-    file.set_attribute(group.get(), "weighted", static_cast<std::int64_t>(network.weighted()));
+    write_network_attributes(
+        file, group.get(),
+        {network.size(), network.nnz(), network.self_loops(), network.weighted()});
     file.write(group.get(), "row_ptr", network.row_ptr());
     file.write(group.get(), "col", network.cols());
     if (network.weighted()) file.write(group.get(), "weights", network.weights());
     file.flush();
   }
   out.commit();
+}
+
+void create_network_hdf5(const std::string& path, const NetworkTotals& totals,
+                         const std::string& provenance) {
+  const Hdf5File file(path, Hdf5File::Mode::create);
+  write_root_attributes(file, k_csr_version, provenance);
+  const H5Id group = file.create_group("network");
+  write_network_attributes(file, group.get(), totals);
+  const auto nnz = static_cast<std::size_t>(totals.nnz);
+  file.create_dataset(group.get(), "row_ptr", H5T_STD_I64LE,
+                      static_cast<std::size_t>(totals.n) + 1);
+  file.create_dataset(group.get(), "col", H5T_STD_I32LE, nnz);
+  if (totals.weighted) file.create_dataset(group.get(), "weights", H5T_IEEE_F64LE, nnz);
+  file.flush();
+}
+
+void write_network_hdf5_rows(const std::string& path, const RowBlock& block,
+                             EdgeOffset entries_before) {
+  const Hdf5File file(path, Hdf5File::Mode::update);
+  const H5Id group = file.open_group("network");
+  std::vector<std::int64_t> pointers(block.row_ptr.begin(), block.row_ptr.end());
+  for (auto& p : pointers) p += entries_before;
+  // rows + 1 pointers: the last one is the next block's first (the same value), or row_ptr[n].
+  file.write_range(group.get(), "row_ptr", static_cast<std::size_t>(block.first_row), pointers);
+  const auto first = static_cast<std::size_t>(entries_before);
+  file.write_range(group.get(), "col", first, block.cols);
+  if (block.weighted()) file.write_range(group.get(), "weights", first, block.weights);
+  file.flush();
 }
 
 }  // namespace hmfnet

@@ -43,4 +43,22 @@ void write_complete_graph_hdf5(const std::string& path, const CompleteGraph& gra
 void write_network_hdf5(const std::string& path, const Network& network,
                         const std::string& provenance = "{}");
 
+/// What the /network attributes of a CSR file say, summed over the row blocks.
+struct NetworkTotals {
+  NodeIndex n = 0;
+  EdgeOffset nnz = 0;
+  EdgeOffset self_loops = 0;
+  bool weighted = false;
+};
+
+/// A CSR network file written by row blocks, the same file write_network_hdf5 writes: one rank
+/// creates it (attributes, datasets allocated but empty), then each rank in turn writes its rows
+/// (row_ptr[first_row .. first_row + rows], col and weights from entries_before on, the stored
+/// entries of the rows before the block). Not atomic by itself: `path` is an AtomicFile's
+/// temporary, renamed once every block is in (parallel/distributed_generation.hpp).
+void create_network_hdf5(const std::string& path, const NetworkTotals& totals,
+                         const std::string& provenance = "{}");
+void write_network_hdf5_rows(const std::string& path, const RowBlock& block,
+                             EdgeOffset entries_before);
+
 }  // namespace hmfnet

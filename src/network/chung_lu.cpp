@@ -41,6 +41,67 @@ void check_law(const PowerLaw& law) {
   }
 }
 
+class ChungLuSource final : public EdgeSource {
+ public:
+  ChungLuSource(const std::vector<double>& targets, LinkProbability kind, std::uint64_t seed)
+      : m_kind(kind), m_seed(seed), m_order(targets.size()), m_sorted(targets.size()) {
+    m_total = std::accumulate(targets.begin(), targets.end(), 0.0);
+    std::iota(m_order.begin(), m_order.end(), 0);
+    std::stable_sort(m_order.begin(), m_order.end(), [&](NodeIndex a, NodeIndex b) {
+      return targets[static_cast<std::size_t>(a)] > targets[static_cast<std::size_t>(b)];
+    });
+    for (std::size_t a = 0; a < m_order.size(); ++a) {
+      m_sorted[a] = targets[static_cast<std::size_t>(m_order[a])];
+    }
+    // Expected edges of position a, bounded by w_a (sum of the smaller targets) / S.
+    m_work_before.assign(m_order.size() + 1, 0.0);
+    double after = m_total;
+    for (std::size_t a = 0; a < m_order.size(); ++a) {
+      after -= m_sorted[a];
+      const double expected = m_total > 0.0 ? m_sorted[a] * std::max(after, 0.0) / m_total : 0.0;
+      m_work_before[a + 1] = m_work_before[a] + expected + 1.0;  // + 1: the unit's own cost
+    }
+  }
+  NodeIndex nodes() const override { return static_cast<NodeIndex>(m_order.size()); }
+  std::int64_t units() const override { return nodes(); }
+  double work_before(std::int64_t k) const override {
+    return m_work_before[static_cast<std::size_t>(k)];
+  }
+
+  void emit(std::int64_t a, std::vector<Edge>& out) const override {
+    const std::int64_t n = nodes();
+    if (a + 1 >= n || !(m_total > 0.0)) return;
+    const NodeIndex u = m_order[static_cast<std::size_t>(a)];
+    Rng rng(m_seed, static_cast<std::uint64_t>(u));
+    const double scale = w_at(a) / m_total;
+    std::int64_t b = a + 1;
+    double p = link(m_kind, scale * w_at(b));
+    // Miller & Hagberg (2011): skip Geometric(p) candidates, p an upper bound of every later
+    // probability (targets decrease along the order), then accept with the ratio q / p.
+    while (b < n && p > 0.0) {
+      if (p < 1.0) {
+        const double skip = std::floor(std::log(rng.uniform_open_zero()) / std::log1p(-p));
+        if (!(skip < static_cast<double>(n - b))) break;
+        b += static_cast<std::int64_t>(skip);
+      }
+      const double q = link(m_kind, scale * w_at(b));
+      if (rng.uniform() < q / p) out.emplace_back(u, m_order[static_cast<std::size_t>(b)]);
+      p = q;
+      ++b;
+    }
+  }
+
+ private:
+  double w_at(std::int64_t position) const { return m_sorted[static_cast<std::size_t>(position)]; }
+
+  LinkProbability m_kind;
+  std::uint64_t m_seed;
+  double m_total = 0.0;
+  std::vector<NodeIndex> m_order;  // nodes by decreasing target (stable)
+  std::vector<double> m_sorted;    // targets in that order
+  std::vector<double> m_work_before;
+};
+
 }  // namespace
 
 namespace {
@@ -99,45 +160,19 @@ std::vector<double> power_law_targets(NodeIndex n, const PowerLaw& law, std::uin
   return w;
 }
 
-Network chung_lu(const std::vector<double>& targets, LinkProbability kind, std::uint64_t seed) {
-  const auto n = static_cast<NodeIndex>(targets.size());
-  if (n < 1) throw ParameterError("n", "0", "n >= 1");
+std::unique_ptr<EdgeSource> chung_lu_source(const std::vector<double>& targets,
+                                            LinkProbability link, std::uint64_t seed) {
+  if (targets.empty()) throw ParameterError("n", "0", "n >= 1");
   for (const double w : targets) {
     if (!(w >= 0.0) || !std::isfinite(w)) {
       throw ParameterError("target degree", std::to_string(w), "finite and >= 0");
     }
   }
-  const double total = std::accumulate(targets.begin(), targets.end(), 0.0);
-  std::vector<NodeIndex> order(targets.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](NodeIndex a, NodeIndex b) {
-    return targets[static_cast<std::size_t>(a)] > targets[static_cast<std::size_t>(b)];
-  });
-  std::vector<std::pair<NodeIndex, NodeIndex>> edges;
-  const auto w_at = [&](std::int64_t pos) {
-    return targets[static_cast<std::size_t>(order[static_cast<std::size_t>(pos)])];
-  };
-  for (std::int64_t a = 0; a + 1 < n && total > 0.0; ++a) {
-    const NodeIndex u = order[static_cast<std::size_t>(a)];
-    Rng rng(seed, static_cast<std::uint64_t>(u));
-    const double scale = w_at(a) / total;
-    std::int64_t b = a + 1;
-    double p = link(kind, scale * w_at(b));
-    // Miller & Hagberg (2011): skip Geometric(p) candidates, p an upper bound of every later
-    // probability (targets decrease along `order`), then accept with the ratio q / p.
-    while (b < n && p > 0.0) {
-      if (p < 1.0) {
-        const double skip = std::floor(std::log(rng.uniform_open_zero()) / std::log1p(-p));
-        if (!(skip < static_cast<double>(n - b))) break;
-        b += static_cast<std::int64_t>(skip);
-      }
-      const double q = link(kind, scale * w_at(b));
-      if (rng.uniform() < q / p) edges.emplace_back(u, order[static_cast<std::size_t>(b)]);
-      p = q;
-      ++b;
-    }
-  }
-  return Network::from_undirected_edges(n, edges);
+  return std::make_unique<ChungLuSource>(targets, link, seed);
+}
+
+Network chung_lu(const std::vector<double>& targets, LinkProbability link, std::uint64_t seed) {
+  return network_from_source(*chung_lu_source(targets, link, seed));
 }
 
 }  // namespace hmfnet

@@ -15,9 +15,11 @@
 // as an upper bound, thinning by the ratio. Node n draws from random stream n of the seed.
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "network/edge_source.hpp"
 #include "network/network.hpp"
 
 namespace hmfnet {
@@ -48,5 +50,11 @@ std::vector<double> power_law_targets(NodeIndex n, const PowerLaw& law, std::uin
 
 /// Chung-Lu graph with the given expected degrees (all >= 0).
 Network chung_lu(const std::vector<double>& targets, LinkProbability link, std::uint64_t seed);
+
+/// The same network unit by unit (unit a: the pairs of the a-th largest target with the smaller
+/// ones), for generating it by rows over ranks. Holds the targets and their order (12 B/node).
+/// Throws as chung_lu.
+std::unique_ptr<EdgeSource> chung_lu_source(const std::vector<double>& targets,
+                                            LinkProbability link, std::uint64_t seed);
 
 }  // namespace hmfnet

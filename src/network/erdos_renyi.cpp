@@ -17,8 +17,8 @@ std::size_t idx(std::int64_t k) { return static_cast<std::size_t>(k); }
 
 // Upper neighbours m > n of row n, in increasing order, by geometric skipping: the gap to the
 // next linked pair is Geometric(q), drawn as floor(log U / log(1 - q)).
-void upper_row(NodeIndex n, NodeIndex rows, double log_miss, std::uint64_t seed,
-               std::vector<NodeIndex>& out) {
+template <class Sink>
+void upper_row(NodeIndex n, NodeIndex rows, double log_miss, std::uint64_t seed, Sink&& sink) {
   Rng rng(seed, static_cast<std::uint64_t>(n));
   std::int64_t m = n;
   const std::int64_t last = rows - 1;
@@ -26,7 +26,7 @@ void upper_row(NodeIndex n, NodeIndex rows, double log_miss, std::uint64_t seed,
     const double skip = std::floor(std::log(rng.uniform_open_zero()) / log_miss);
     if (!(skip < static_cast<double>(last - m))) break;  // also stops on NaN
     m += 1 + static_cast<std::int64_t>(skip);
-    out.push_back(static_cast<NodeIndex>(m));
+    sink(static_cast<NodeIndex>(m));
   }
 }
 
@@ -50,12 +50,39 @@ UpperTriangle generate_upper(const ErdosRenyiParameters& p, double log_miss) {
     auto& out = u.blocks[idx(t)];
     for (NodeIndex n = u.block_first[idx(t)]; n < u.block_first[idx(t) + 1]; ++n) {
       const std::size_t before = out.size();
-      upper_row(n, p.n, log_miss, p.seed, out);
+      upper_row(n, p.n, log_miss, p.seed, [&out](NodeIndex m) { out.push_back(m); });
       u.count[idx(n)] = static_cast<EdgeOffset>(out.size() - before);
     }
   }
   return u;
 }
+
+void require_valid(const ErdosRenyiParameters& p) {
+  if (p.n < 1) throw ParameterError("n", std::to_string(p.n), "n >= 1");
+  if (!(p.q >= 0.0 && p.q <= 1.0)) throw ParameterError("q", std::to_string(p.q), "0 <= q <= 1");
+}
+
+class ErdosRenyiSource final : public EdgeSource {
+ public:
+  explicit ErdosRenyiSource(const ErdosRenyiParameters& p) : m_p(p), m_log_miss(std::log1p(-p.q)) {}
+  NodeIndex nodes() const override { return m_p.n; }
+  std::int64_t units() const override { return m_p.n; }
+  double work_before(std::int64_t k) const override {
+    // Pairs {i, j > i} with i < k: k (N - 1) - k (k - 1) / 2.
+    const auto kk = static_cast<double>(k);
+    return kk * (m_p.n - 1) - kk * (kk - 1.0) / 2.0;
+  }
+  void emit(std::int64_t k, std::vector<Edge>& out) const override {
+    if (m_p.q == 0.0) return;
+    const auto row = static_cast<NodeIndex>(k);
+    upper_row(row, m_p.n, m_log_miss, m_p.seed,
+              [&out, row](NodeIndex m) { out.emplace_back(row, m); });
+  }
+
+ private:
+  ErdosRenyiParameters m_p;
+  double m_log_miss;  // log(1 - q): -inf for q = 1, every skip 0
+};
 
 }  // namespace
 
@@ -67,9 +94,13 @@ double erdos_renyi_probability(NodeIndex n, double mean_degree) {
   return mean_degree / (n - 1);
 }
 
+std::unique_ptr<EdgeSource> erdos_renyi_source(const ErdosRenyiParameters& params) {
+  require_valid(params);
+  return std::make_unique<ErdosRenyiSource>(params);
+}
+
 Network erdos_renyi(const ErdosRenyiParameters& p) {
-  if (p.n < 1) throw ParameterError("n", std::to_string(p.n), "n >= 1");
-  if (!(p.q >= 0.0 && p.q <= 1.0)) throw ParameterError("q", std::to_string(p.q), "0 <= q <= 1");
+  require_valid(p);
   const double log_miss = std::log1p(-p.q);  // -inf for q = 1: every skip is 0
   UpperTriangle u = p.q > 0.0 ? generate_upper(p, log_miss) : UpperTriangle{};
   if (p.q == 0.0) u.count.assign(idx(p.n), 0);

@@ -5,7 +5,9 @@
 // Row n draws its pairs {n, m > n} from random stream n of `seed`: the network does not depend
 // on thread count or visiting order.
 #include <cstdint>
+#include <memory>
 
+#include "network/edge_source.hpp"
 #include "network/network.hpp"
 
 namespace hmfnet {
@@ -22,5 +24,9 @@ double erdos_renyi_probability(NodeIndex n, double mean_degree);
 
 /// Throws ParameterError for n < 1 or q outside [0, 1].
 Network erdos_renyi(const ErdosRenyiParameters& params);
+
+/// The same network unit by unit (unit n: row n's pairs {n, m > n}), for generating it by rows
+/// over ranks. Throws as erdos_renyi.
+std::unique_ptr<EdgeSource> erdos_renyi_source(const ErdosRenyiParameters& params);
 
 }  // namespace hmfnet

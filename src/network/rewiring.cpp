@@ -55,6 +55,12 @@ void check_input(const Network& network, const RewiringParameters& p) {
                          "rewiring needs a network without self-loops");
   }
   if (network.edges() < 2) throw ParameterError("network", "fewer than 2 edges", ">= 2 edges");
+  if (network.nnz() > k_max_rewiring_entries) {
+    throw ParameterError("network", std::to_string(network.nnz()) + " stored entries",
+                         "at most " + std::to_string(k_max_rewiring_entries) +
+                             " (rewiring is a serial Markov chain on one rank; it is not "
+                             "distributed)");
+  }
   if (!(p.target_rho > 0.0) || !std::isfinite(p.target_rho)) {
     throw ParameterError("target rho", std::to_string(p.target_rho), "finite and > 0");
   }

@@ -7,7 +7,9 @@
 // network (-lambda is an eigenvalue). O(N^2) draws (pair by pair, row n from random stream n of
 // `seed`, so the network does not depend on visiting order): meant for N up to ~10^4.
 #include <cstdint>
+#include <memory>
 
+#include "network/edge_source.hpp"
 #include "network/network.hpp"
 
 namespace hmfnet {
@@ -22,5 +24,8 @@ struct TwoBlockParameters {
 /// Nodes 0 .. half-1 form the first community. Throws ParameterError for half < 1, 2 half
 /// beyond NodeIndex, or a probability outside [0, 1].
 Network two_block_sbm(const TwoBlockParameters& params);
+
+/// The same network unit by unit (unit i: row i's pairs {i, j > i}). Throws as two_block_sbm.
+std::unique_ptr<EdgeSource> two_block_sbm_source(const TwoBlockParameters& params);
 
 }  // namespace hmfnet

@@ -204,6 +204,11 @@ bool DistributedNetwork::weighted() const { return m_impl->weighted; }
 
 EdgeOffset DistributedNetwork::global_self_loops() const { return m_impl->self_loops; }
 
+NodeIndex DistributedNetwork::ghost_count() const {
+  if (!stores_rows()) return 0;
+  return m_impl->adjacency.columns - local_size();
+}
+
 std::vector<double> DistributedNetwork::local_degrees() const {
   const auto& a = require_rows(*m_impl, "DistributedNetwork::local_degrees").adjacency;
   std::vector<double> d(a.row_ptr.size() - 1, 0.0);

@@ -50,6 +50,9 @@ class DistributedNetwork {
   EdgeOffset global_self_loops() const;
   /// d_i = sum_j A_ij of the rows owned here.
   std::vector<double> local_degrees() const;
+  /// Columns referenced by this rank's rows that other ranks own: the values one product
+  /// imports (0 on one rank, and for K_N held without rows).
+  NodeIndex ghost_count() const;
 
   /// y = A x on the rows owned here; x and y hold this rank's entries (local_size() each).
   /// Collective (ghost values of x travel through the matrix's Import).

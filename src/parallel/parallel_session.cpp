@@ -106,11 +106,25 @@ void ParallelSession::broadcast(std::vector<std::int64_t>& values, int root) {
   values.assign(data.begin(), data.end());
 }
 
-std::vector<double> ParallelSession::peak_memory_mb() {
+void ParallelSession::broadcast(std::string& text, int root) {
+  const auto comm = Tpetra::getDefaultComm();
+  int length = static_cast<int>(text.size());
+  Teuchos::broadcast(*comm, root, Teuchos::outArg(length));
+  text.resize(static_cast<std::size_t>(length));
+  if (length > 0) Teuchos::broadcast(*comm, root, length, text.data());
+}
+
+void ParallelSession::barrier() { Tpetra::getDefaultComm()->barrier(); }
+
+double ParallelSession::own_peak_memory_mb() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // KB
+}
+
+std::vector<double> ParallelSession::peak_memory_mb() {
   std::vector<double> mb(static_cast<std::size_t>(ranks()), 0.0);
-  mb[static_cast<std::size_t>(rank())] = static_cast<double>(usage.ru_maxrss) / 1024.0;  // KB
+  mb[static_cast<std::size_t>(rank())] = own_peak_memory_mb();
   sum_in_place(mb);
   return mb;
 }

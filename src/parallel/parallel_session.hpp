@@ -46,10 +46,14 @@ class ParallelSession {
   static void send(const std::vector<std::int64_t>& values, int destination);
   static std::vector<std::int64_t> receive(int source);
   static void broadcast(std::vector<std::int64_t>& values, int root);
+  static void broadcast(std::string& text, int root);
+  static void barrier();
 
   /// Each rank's peak resident memory so far (getrusage maxrss), in MB, indexed by rank, on
   /// every rank. Collective.
   static std::vector<double> peak_memory_mb();
+  /// This rank's own peak resident memory so far, MB (not collective).
+  static double own_peak_memory_mb();
 
   /// Runs a step that may fail on some ranks only (a read of this rank's part of a file, an
   /// allocation). Collective: when it throws on any rank, every rank throws CollectiveError with

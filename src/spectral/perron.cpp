@@ -14,12 +14,15 @@
 #include "core/error.hpp"
 #include "core/random.hpp"
 #include "parallel/distributed_network_impl.hpp"
+#include "spectral/second_eigenvalue_bound.hpp"
 
 namespace hmfnet {
 
 namespace {
 
 using Problem = Anasazi::BasicEigenproblem<double, TpetraMultiVector, TpetraOperator>;
+using Krylov = Anasazi::BlockKrylovSchurSolMgr<double, TpetraMultiVector, TpetraOperator>;
+using Lobpcg = Anasazi::LOBPCGSolMgr<double, TpetraMultiVector, TpetraOperator>;
 
 // Deterministic positive start vector, a function of the global index only (so independent of
 // the rank count): positive entries overlap the Perron vector, and random ones avoid starting on
@@ -59,6 +62,41 @@ bool normalise_perron(std::vector<double>& u) {
   return one_sign;
 }
 
+// P A P with P = I - u u^T, u the unit Perron vector (on this rank's rows): A with lambda's
+// eigenvector deflated, so its largest eigenvalue is lambda_2 (a symmetric A: the other
+// eigenvectors are orthogonal to u and kept; u itself goes to 0, and a start orthogonal to u
+// keeps the Krylov space away from it). Asking one pair of it costs less than two pairs of A,
+// and lambda is not searched for again.
+class DeflatedOperator final : public TpetraOperator {
+ public:
+  DeflatedOperator(Teuchos::RCP<const TpetraOperator> a, Teuchos::RCP<const TpetraMultiVector> u)
+      : m_a(std::move(a)), m_u(std::move(u)) {}
+  Teuchos::RCP<const TpetraMap> getDomainMap() const override { return m_a->getDomainMap(); }
+  Teuchos::RCP<const TpetraMap> getRangeMap() const override { return m_a->getRangeMap(); }
+  void apply(const TpetraMultiVector& x, TpetraMultiVector& y, Teuchos::ETransp /*mode*/,
+             double alpha, double beta) const override {
+    TpetraMultiVector px(x, Teuchos::Copy);
+    project(px);
+    TpetraMultiVector apx(y.getMap(), y.getNumVectors());
+    m_a->apply(px, apx);
+    project(apx);
+    y.update(alpha, apx, beta);
+  }
+  /// v <- v - u (u^T v), column by column.
+  void project(TpetraMultiVector& v) const {
+    const auto u = m_u->getVector(0);
+    for (std::size_t j = 0; j < v.getNumVectors(); ++j) {
+      const auto column = v.getVectorNonConst(j);
+      const double along = column->dot(*u);
+      column->update(-along, *u, 1.0);
+    }
+  }
+
+ private:
+  Teuchos::RCP<const TpetraOperator> m_a;
+  Teuchos::RCP<const TpetraMultiVector> m_u;
+};
+
 // One Anasazi solve; nullopt-like `ok = false` when the manager reports no convergence.
 struct RawPair {
   bool ok = false;
@@ -70,9 +108,13 @@ struct RawPair {
 };
 
 template <class Manager>
-RawPair run_solver(const DistributedNetwork& network, Teuchos::ParameterList params, int nev = 1) {
+RawPair run_solver(const DistributedNetwork& network, Teuchos::ParameterList params, int nev = 1,
+                   Teuchos::RCP<const TpetraOperator> op = Teuchos::null,
+                   Teuchos::RCP<TpetraMultiVector> start = Teuchos::null) {
   const auto& impl = tpetra_impl(network);
-  auto problem = Teuchos::rcp(new Problem(adjacency_operator(network), start_vector(impl)));
+  if (op.is_null()) op = adjacency_operator(network);
+  if (start.is_null()) start = start_vector(impl);
+  auto problem = Teuchos::rcp(new Problem(op, start));
   problem->setHermitian(true);
   problem->setNEV(nev);
   if (!problem->setProblem()) throw ConvergenceError("Anasazi rejected the eigenproblem set-up");
@@ -162,6 +204,56 @@ RawPair tiny_pair(const DistributedNetwork& network) {
   return raw;
 }
 
+// lambda_2 converged: the top pair of A with u deflated (DeflatedOperator), Krylov-Schur only:
+// on matrices with very few distinct eigenvalues (a star has three) the Krylov space becomes
+// invariant and Anasazi throws (subView out of range, seen on a star of 2000 nodes), and LOBPCG
+// was seen to loop inside one iteration (SVQB orthogonalisation on two cliques of 4 and 7
+// nodes). lambda_2 then stays NaN: unknown, said so by the summary. Only as tight as the
+// acceptance below needs: Anasazi's test is relative to the pair's own eigenvalue, |lambda_2| <=
+// lambda, so 1/10 of the accepted residual leaves room. At the lambda tolerance (1e-10) the
+// second pair of a dense ER bulk edge cost nearly all of the time (N = 10^5, degree 100: 97 s).
+void converge_second_eigenvalue(const DistributedNetwork& network, Teuchos::ParameterList krylov,
+                                const PerronOptions& options, PerronResult& r) {
+  krylov.set("Convergence Tolerance",
+             std::max(options.tolerance, 0.1 * k_second_eigenvalue_residual));
+  RawPair second;
+  try {
+    const auto& impl = tpetra_impl(network);
+    auto u = Teuchos::rcp(new TpetraMultiVector(impl.map, 1));
+    {
+      auto data = u->getDataNonConst(0);
+      const auto first = static_cast<std::size_t>(network.first_row());
+      for (Teuchos::ArrayRCP<double>::size_type k = 0; k < data.size(); ++k) {
+        data[k] = r.u[first + static_cast<std::size_t>(k)];
+      }
+    }
+    const auto deflated = Teuchos::rcp(new DeflatedOperator(adjacency_operator(network), u));
+    auto start = start_vector(impl);
+    deflated->project(*start);
+    second = run_solver<Krylov>(network, krylov, 1, deflated, start);
+  } catch (const std::exception&) {
+    second.ok = false;
+  }
+  // Every rank must agree before the collective residual below (the projected problem is
+  // replicated, so they do; the reduction makes it certain).
+  int ok = second.ok && !second.u.empty() ? 1 : 0, all_ok = 0;
+  Teuchos::reduceAll(*tpetra_impl(network).map->getComm(), Teuchos::REDUCE_MIN, ok,
+                     Teuchos::outArg(all_ok));
+  if (all_ok != 1) return;
+  // The Ritz vector lies in u-perp, where A and the deflated operator agree. Relative to
+  // lambda, not lambda_2 (which may be 0: a star, K_ab).
+  const double residual2 =
+      relative_residual(network, second.lambda, second.u) * std::abs(second.lambda) / r.lambda;
+  // Only the eigenvalue is used (the gap), and for a symmetric A it is within residual2 |x| of
+  // an eigenvalue (Bauer-Fike): 1e-6 relative decides lambda / lambda_2 < 1.1 with room. A
+  // degenerate lambda_2 (a ring's cosine pair) leaves its vector less accurate than the 1e-8
+  // that lambda's is held to.
+  if (residual2 <= k_second_eigenvalue_residual) {
+    r.lambda2 = second.lambda;
+    r.lambda2_residual = residual2;
+  }
+}
+
 }  // namespace
 
 PerronResult perron_eigenpair(const DistributedNetwork& network, const PerronOptions& options) {
@@ -178,10 +270,11 @@ PerronResult perron_eigenpair(const DistributedNetwork& network, const PerronOpt
   // after a few steps and block Krylov-Schur has been seen to return lambda with the eigenvector
   // of another eigenvalue (residual 0.64). LOBPCG is then tried from the same start.
   const double accept = std::max(100.0 * options.tolerance, 1e-13);
-  Teuchos::ParameterList krylov = common_parameters(options);
-  krylov.set("Num Blocks", std::min(options.num_blocks, std::max(3, network.global_size() - 1)));
-  using Krylov = Anasazi::BlockKrylovSchurSolMgr<double, TpetraMultiVector, TpetraOperator>;
-  using Lobpcg = Anasazi::LOBPCGSolMgr<double, TpetraMultiVector, TpetraOperator>;
+  const Teuchos::ParameterList krylov = [&] {
+    Teuchos::ParameterList list = common_parameters(options);
+    list.set("Num Blocks", std::min(options.num_blocks, std::max(3, network.global_size() - 1)));
+    return list;
+  }();
   RawPair raw =
       network.global_size() <= 2 ? tiny_pair(network) : run_solver<Krylov>(network, krylov);
   double residual = 0.0;
@@ -216,44 +309,25 @@ PerronResult perron_eigenpair(const DistributedNetwork& network, const PerronOpt
   r.iterations = raw.iterations;
   r.lambda2 = std::numeric_limits<double>::quiet_NaN();
   if (options.second_eigenvalue && network.global_size() > 2) {
-    // A separate solve for two pairs, so lambda itself is found exactly as without the option.
-    // Krylov-Schur only: on matrices with very few distinct eigenvalues (a star has three) the
-    // Krylov space becomes invariant and Anasazi throws (subView out of range, seen on a star of
-    // 2000 nodes), and LOBPCG was seen to loop inside one iteration (SVQB orthogonalisation on
-    // two cliques of 4 and 7 nodes). lambda_2 then stays NaN: unknown, said so by the summary.
-    // Only as tight as the acceptance below needs: Anasazi's test is relative to each pair's own
-    // eigenvalue, |lambda_2| <= lambda, so 1/10 of the accepted residual leaves room. At the
-    // lambda tolerance (1e-10) the second pair of a dense ER bulk edge cost nearly all of the
-    // time (N = 10^5, degree 100: 97 s).
-    Teuchos::ParameterList loose = krylov;
-    loose.set("Convergence Tolerance",
-              std::max(options.tolerance, 0.1 * k_second_eigenvalue_residual));
-    RawPair two;
-    try {
-      two = run_solver<Krylov>(network, loose, 2);
-    } catch (const std::exception&) {
-      two.ok = false;
-    }
-    // Every rank must agree before the collective residual below (the projected problem is
-    // replicated, so they do; the reduction makes it certain).
-    int ok = two.ok && !two.u2.empty() ? 1 : 0, all_ok = 0;
-    Teuchos::reduceAll(*tpetra_impl(network).map->getComm(), Teuchos::REDUCE_MIN, ok,
-                       Teuchos::outArg(all_ok));
-    if (all_ok == 1) {
-      normalise_perron(two.u2);
-      // Relative to lambda, not lambda_2 (which may be 0: a star, K_ab).
-      const double residual2 =
-          relative_residual(network, two.lambda2, two.u2) * std::abs(two.lambda2) / r.lambda;
-      // Only the eigenvalue is used (the gap), and for a symmetric A it is within residual2 |x|
-      // of an eigenvalue (Bauer-Fike): 1e-6 relative decides lambda / lambda_2 < 1.1 with room.
-      // A degenerate lambda_2 (a ring's cosine pair) leaves its vector less accurate than the
-      // 1e-8 that lambda's is held to. The first pair must be lambda again.
-      if (residual2 <= k_second_eigenvalue_residual &&
-          std::abs(two.lambda - r.lambda) <= 1e-8 * r.lambda) {
-        r.lambda2 = two.lambda2;
-        r.lambda2_residual = residual2;
+    bool settled = false;
+    if (options.bound_lambda2_first) {
+      const double threshold = r.lambda / options.gap_ratio;
+      const SecondEigenvalueBound b = bound_second_eigenvalue(
+          network, r.u,
+          [&](double lower, double upper) { return upper < threshold || lower >= threshold; });
+      r.lambda2_lower = b.lower;
+      r.lambda2_upper = b.upper;
+      r.lambda2_bound_failure = b.exact ? 0.0 : b.failure_probability;
+      r.lambda2_bound_steps = b.steps;
+      if (b.exact) {
+        r.lambda2 = b.lower;
+        r.lambda2_residual = 0.0;
       }
+      // Below the threshold the bounds answer the summary's question; above it the warning
+      // quotes lambda_2, so it is converged.
+      settled = b.exact || b.upper < threshold;
     }
+    if (!settled) converge_second_eigenvalue(network, krylov, options, r);
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

@@ -19,6 +19,11 @@ struct PerronOptions {
   /// gap lambda - lambda_2 bounds the eigenvector's error (~ residual lambda / gap) and sets
   /// where the second mode of A goes unstable (K = (lambda / lambda_2) K_c, eq:bkApprox).
   bool second_eigenvalue = false;
+  /// With second_eigenvalue: bound lambda_2 first (spectral/second_eigenvalue_bound.hpp, a few
+  /// dozen products) and converge it only when the bounds do not show lambda / lambda_2 >
+  /// gap_ratio. Off: always converge it (the top pair of A with u deflated, Krylov-Schur).
+  bool bound_lambda2_first = false;
+  double gap_ratio = 1.1;  ///< the ratio the bounds must settle (network_summary's warning)
 };
 
 struct PerronResult {
@@ -32,6 +37,12 @@ struct PerronResult {
   double seconds = 0.0;
   double lambda2 = std::numeric_limits<double>::quiet_NaN();  ///< NaN unless asked and found
   double lambda2_residual = 0.0;
+  /// With bound_lambda2_first: lambda2_lower <= lambda_2 <= lambda2_upper, the upper bound with
+  /// probability >= 1 - lambda2_bound_failure over the seeded start; NaN when not bounded.
+  double lambda2_lower = std::numeric_limits<double>::quiet_NaN();
+  double lambda2_upper = std::numeric_limits<double>::quiet_NaN();
+  double lambda2_bound_failure = 0.0;
+  int lambda2_bound_steps = 0;
 };
 
 /// Collective. Throws ConvergenceError if Anasazi does not converge (never returns an

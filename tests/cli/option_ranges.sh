@@ -26,6 +26,7 @@ net="$out/net.mtx"
 declare -A base=(
   ["generate er"]="--n 50 --q 0.1 --seed 1 --output $out/er.mtx"
   ["generate sf"]="--n 100 --alpha 2.5 --dmin 3 --seed 1 --output $out/sf.mtx"
+  ["generate sbm"]="--half 30 --p-in 0.2 --p-out 0.05 --seed 1 --output $out/sbm.mtx"
   ["generate complete"]="--n 50 --output $out/k.h5"
   ["rewire"]="input $net --target-rho 1.1 --seed 1 --output $out/rewired.mtx"
   ["spectrum"]="input $net"

@@ -67,6 +67,13 @@ inline void check_complete(const cli::CompleteFlags& f, const std::string& line)
   c.require(f.n >= 2 && f.n <= 2147483647, "--n outside 2..2^31-1");
 }
 
+inline void check_sbm(const cli::SbmFlags& f, const std::string& line) {
+  const RangeChecks c(line);
+  c.require(f.half >= 1 && f.half <= 1073741823, "--half outside 1..2^30-1");
+  c.require(f.p_in >= 0.0 && f.p_in <= 1.0, "--p-in not a probability");
+  c.require(f.p_out >= 0.0 && f.p_out <= 1.0, "--p-out not a probability");
+}
+
 inline void check_simulate(const cli::SimulateFlags& f, const std::string& line) {
   const RangeChecks c(line);
   c.positive(f.sigma0, "--sigma0 not > 0");
@@ -104,9 +111,7 @@ inline void check_theory(const cli::TheoryFlags& f, const std::string& line) {
 inline bool parse_command_line(std::vector<std::string> args) {
   std::string line = "hmfnet";
   for (const auto& a : args) line += " " + a;
-  cli::ErFlags er;
-  cli::SfFlags sf;
-  cli::CompleteFlags complete;
+  cli::GenerateFlags generate;
   cli::RewireFlags rewire;
   cli::SpectrumFlags spectrum;
   cli::TheoryFlags theory;
@@ -115,10 +120,11 @@ inline bool parse_command_line(std::vector<std::string> args) {
   bool reached = false;
   CLI::App app{"hmfnet (fuzzed grammar)"};
   cli::configure_app(app);
-  cli::add_generate_options(
-      app, er, sf, complete, [&] { check_er(er, line), reached = true; },
-      [&] { check_sf(sf, line), reached = true; },
-      [&] { check_complete(complete, line), reached = true; });
+  cli::add_generate_options(app, generate,
+                            {[&] { check_er(generate.er, line), reached = true; },
+                             [&] { check_sf(generate.sf, line), reached = true; },
+                             [&] { check_sbm(generate.sbm, line), reached = true; },
+                             [&] { check_complete(generate.complete, line), reached = true; }});
   cli::add_rewire_options(app, rewire, [&] {
     const RangeChecks c(line);
     c.positive(rewire.target_rho, "--target-rho not > 0");

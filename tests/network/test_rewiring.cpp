@@ -3,6 +3,7 @@
 #include "core/error.hpp"
 #include "network/chung_lu.hpp"
 #include "network/degree_statistics.hpp"
+#include "network/erdos_renyi.hpp"
 #include "network/rewiring.hpp"
 
 using namespace hmfnet;
@@ -53,4 +54,13 @@ TEST_CASE("Rewiring refuses weighted networks and self-loops", "[rewiring]") {
   REQUIRE_THROWS_AS(rewire_to_correlation(weighted, {1.0, 1, 0}), ParameterError);
   const Network loop = Network::from_undirected_edges(3, {{0, 1}, {1, 2}, {2, 2}});
   REQUIRE_THROWS_AS(rewire_to_correlation(loop, {1.0, 1, 0}), ParameterError);
+}
+
+TEST_CASE("Rewiring refuses a network past its stated size, naming the limit", "[rewiring]") {
+  // K_4473 held as rows: 4473 * 4472 = 20,003,256 stored entries, just past the limit.
+  const Network big = erdos_renyi({4473, 1.0, 1});
+  REQUIRE(big.nnz() == k_max_rewiring_entries + 3256);
+  CHECK_THROWS_WITH(rewire_to_correlation(big, {1.5, 1, 0}),
+                    Catch::Matchers::Contains("at most 20000000") &&
+                        Catch::Matchers::Contains("not distributed"));
 }

@@ -1,11 +1,8 @@
 // Reading a network by row blocks over the ranks: equal to the replicated network on every rank
 // count, and an error found by one rank (a corrupted entry in its block, an asymmetric pair
 // across blocks) ends every rank with that one message. Run at 1, 2 and 3 ranks (label mpi).
-#include <unistd.h>
-
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <filesystem>
 
 #include "io/network_hdf5.hpp"
 #include "network/erdos_renyi.hpp"
@@ -13,53 +10,12 @@
 #include "parallel/parallel_session.hpp"
 #include "spectral/perron.hpp"
 #include "support/hdf5_corruption.hpp"
+#include "support/shared_file.hpp"
 
 using namespace hmfnet;
 using Catch::Matchers::Contains;
-
-namespace {
-
-// One file name for all ranks of this run (their parent, mpirun, is shared), another for a
-// concurrent run at another rank count; rank 0 writes it and removes it.
-class SharedFile {
- public:
-  explicit SharedFile(const std::string& stem)
-      : m_path((std::filesystem::temp_directory_path() /
-                (stem + "_" + std::to_string(::getppid()) + "_" +
-                 std::to_string(ParallelSession::ranks()) + ".h5"))
-                   .string()) {}
-  ~SharedFile() {
-    ParallelSession::sum(0.0);  // every rank is done with it
-    if (ParallelSession::rank() == 0) std::filesystem::remove(m_path);
-  }
-  SharedFile(const SharedFile&) = delete;
-  SharedFile& operator=(const SharedFile&) = delete;
-  const std::string& path() const { return m_path; }
-  /// Rank 0 writes (then `corrupt` runs on it); the others wait for it.
-  template <class Corrupt>
-  void write(const Network& net, Corrupt corrupt) const {
-    ParallelSession::agree([&] {
-      if (ParallelSession::rank() == 0) {
-        write_network_hdf5(m_path, net);
-        corrupt();
-      }
-    });
-  }
-
- private:
-  std::string m_path;
-};
-
-std::string collective_message(const std::function<void()>& step) {
-  try {
-    step();
-  } catch (const CollectiveError& e) {
-    return e.what();
-  }
-  return "(no CollectiveError)";
-}
-
-}  // namespace
+using hmfnet::test::collective_message;
+using hmfnet::test::SharedFile;
 
 TEST_CASE(
     "A network read by row blocks equals the replicated one on every rank count "

@@ -1,0 +1,88 @@
+#include "parallel/distributed_network_file.hpp"
+
+#include <memory>
+#include <vector>
+
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "io/network_hdf5.hpp"
+#include "parallel/parallel_session.hpp"
+
+namespace hmfnet {
+
+namespace {
+
+// Per rank: rows, stored entries, self-loops, weighted (0/1); summed so every rank has all.
+struct BlockCounts {
+  std::vector<std::uint64_t> rows, nnz, self_loops, weighted;
+};
+
+BlockCounts gather_counts(const RowBlock& block) {
+  const auto ranks = static_cast<std::size_t>(ParallelSession::ranks());
+  const auto me = static_cast<std::size_t>(ParallelSession::rank());
+  std::vector<std::uint64_t> all(4 * ranks, 0);
+  all[me] = static_cast<std::uint64_t>(block.rows());
+  all[ranks + me] = static_cast<std::uint64_t>(block.nnz());
+  all[2 * ranks + me] = static_cast<std::uint64_t>(block.self_loops());
+  all[3 * ranks + me] = block.weighted() ? 1 : 0;
+  ParallelSession::sum_in_place(all);
+  const auto part = [&](std::size_t k) {
+    return std::vector<std::uint64_t>(all.begin() + static_cast<std::ptrdiff_t>(k * ranks),
+                                      all.begin() + static_cast<std::ptrdiff_t>((k + 1) * ranks));
+  };
+  return {part(0), part(1), part(2), part(3)};
+}
+
+}  // namespace
+
+void write_distributed_network_hdf5(const std::string& path, const RowBlock& block,
+                                    const std::string& provenance) {
+  const BlockCounts counts = gather_counts(block);
+  const int me = ParallelSession::rank();
+  NetworkTotals totals{block.n, 0, 0, false};
+  EdgeOffset entries_before = 0;
+  std::uint64_t rows_before = 0;
+  for (std::size_t p = 0; p < counts.rows.size(); ++p) {
+    if (static_cast<int>(p) < me) {
+      entries_before += static_cast<EdgeOffset>(counts.nnz[p]);
+      rows_before += counts.rows[p];
+    }
+    totals.nnz += static_cast<EdgeOffset>(counts.nnz[p]);
+    totals.self_loops += static_cast<EdgeOffset>(counts.self_loops[p]);
+    // A block without entries cannot say whether the network is weighted.
+    totals.weighted = totals.weighted || counts.weighted[p] != 0;
+  }
+  ParallelSession::agree([&] {
+    if (rows_before != static_cast<std::uint64_t>(block.first_row) ||
+        (me + 1 == ParallelSession::ranks() &&
+         rows_before + static_cast<std::uint64_t>(block.rows()) !=
+             static_cast<std::uint64_t>(block.n))) {
+      throw InputError(path, 0,
+                       "the row blocks do not tile the " + std::to_string(block.n) +
+                           " rows in rank order (this block starts at row " +
+                           std::to_string(block.first_row) + ")");
+    }
+    if (totals.weighted && !block.weighted() && block.nnz() > 0) {
+      throw InputError(path, 0, "some row blocks are weighted and some are not");
+    }
+  });
+  std::unique_ptr<AtomicFile> out;
+  std::string temp;
+  ParallelSession::agree([&] {
+    if (me != 0) return;
+    out = std::make_unique<AtomicFile>(path);
+    create_network_hdf5(out->temp_path(), totals, provenance);
+    temp = out->temp_path();
+  });
+  ParallelSession::broadcast(temp, 0);
+  for (int writer = 0; writer < ParallelSession::ranks(); ++writer) {
+    ParallelSession::agree([&] {
+      if (me == writer) write_network_hdf5_rows(temp, block, entries_before);
+    });
+  }
+  ParallelSession::agree([&] {
+    if (me == 0) out->commit();
+  });
+}
+
+}  // namespace hmfnet
