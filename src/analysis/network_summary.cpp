@@ -35,12 +35,14 @@ void add_spectrum(NetworkSummary& s, const PerronResult& perron, double sigma0) 
   if (perron.lambda2 != 0.0) s.second_mode_ratio = perron.lambda / perron.lambda2;
   if (perron.lambda2 < perron.lambda)  // false for NaN and for a degenerate lambda (no gap)
     s.eigenvector_error_bound = perron.residual * perron.lambda / (perron.lambda - perron.lambda2);
-  if (std::isnan(perron.lambda2) && std::isfinite(perron.lambda2_upper)) {
+  if (std::isnan(perron.lambda2) && std::isfinite(perron.lambda2_lower)) {
     s.lambda2_lower = perron.lambda2_lower;
     s.lambda2_upper = perron.lambda2_upper;
     s.lambda2_bound_failure = perron.lambda2_bound_failure;
     s.lambda2_bound_steps = perron.lambda2_bound_steps;
-    if (perron.lambda2_upper > 0.0) s.second_mode_ratio = perron.lambda / perron.lambda2_upper;
+    if (perron.lambda2_upper > 0.0 && std::isfinite(perron.lambda2_upper)) {
+      s.second_mode_ratio = perron.lambda / perron.lambda2_upper;
+    }
     if (perron.lambda2_upper < perron.lambda) {
       s.eigenvector_error_bound =
           perron.residual * perron.lambda / (perron.lambda - perron.lambda2_upper);
@@ -73,6 +75,14 @@ void add_warnings(NetworkSummary& s) {
         "communities), so the single-mode onset theory holds only below it; Perron vector "
         "error <= " +
         short_number(s.eigenvector_error_bound));
+  }
+  // Bounds alone that prove it (the converged solve that should follow them failed).
+  if (std::isnan(s.lambda2) && s.lambda2_lower >= s.lambda / k_near_degenerate_ratio) {
+    s.warnings.push_back("near-degenerate lambda: lambda_2 >= " + short_number(s.lambda2_lower) +
+                         " (a Lanczos lower bound; lambda_2 itself not converged), lambda / "
+                         "lambda_2 <= " +
+                         short_number(s.lambda / s.lambda2_lower) +
+                         ": a second mode goes unstable at that multiple of K_c");
   }
   if (!s.perron_nonnegative) {
     s.warnings.push_back("the eigenvector of lambda changes sign: lambda is degenerate");
@@ -173,8 +183,11 @@ std::string to_json(const NetworkSummary& s) {
     if (std::isfinite(s.second_mode_ratio)) j["second_mode_ratio"] = s.second_mode_ratio;
     if (std::isfinite(s.eigenvector_error_bound))
       j["eigenvector_error_bound"] = s.eigenvector_error_bound;
-  } else if (std::isfinite(s.lambda2_upper)) {
-    j["lambda2_bounds"] = {s.lambda2_lower, s.lambda2_upper};
+  } else if (std::isfinite(s.lambda2_lower)) {
+    // An upper bound not yet finite (eps_k >= 1) is written as null.
+    j["lambda2_bounds"] = {s.lambda2_lower, std::isfinite(s.lambda2_upper)
+                                                ? nlohmann::json(s.lambda2_upper)
+                                                : nlohmann::json(nullptr)};
     j["lambda2_bound_failure_probability"] = s.lambda2_bound_failure;
     j["lambda2_bound_steps"] = s.lambda2_bound_steps;
     if (std::isfinite(s.second_mode_ratio)) j["second_mode_ratio_at_least"] = s.second_mode_ratio;

@@ -30,12 +30,14 @@ void print_text(const NetworkSummary& s) {
             << s.eigen_iterations << " iterations, " << s.eigen_seconds << " s)\n"
             << "rho                " << s.rho << "\n"
             << "G                  " << s.G << "\n";
-  if (std::isnan(s.lambda2) && std::isfinite(s.lambda2_upper)) {
+  if (std::isnan(s.lambda2) && std::isfinite(s.lambda2_lower)) {
     std::cout << "lambda_2           in [" << s.lambda2_lower << ", " << s.lambda2_upper
               << "] (Lanczos bounds, " << s.lambda2_bound_steps
-              << " steps; the upper one with probability >= 1 - " << s.lambda2_bound_failure
-              << "): lambda / lambda_2 >= " << s.second_mode_ratio
-              << ", Perron vector error <= " << s.eigenvector_error_bound << "\n";
+              << " steps; the upper one with probability >= 1 - " << s.lambda2_bound_failure << ")";
+    if (std::isfinite(s.second_mode_ratio)) {
+      std::cout << ": lambda / lambda_2 >= " << s.second_mode_ratio;
+    }
+    std::cout << ", Perron vector error <= " << s.eigenvector_error_bound << "\n";
   } else if (std::isnan(s.lambda2)) {
     // Few distinct eigenvalues (a star has three) defeat Krylov-Schur for a second pair.
     std::cout << "lambda_2           not found (no second eigenpair passed its residual check)\n";

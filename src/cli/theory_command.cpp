@@ -12,6 +12,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -21,8 +22,13 @@
 #include "cli/read_flags.hpp"
 #include "cli/validators.hpp"
 #include "core/error.hpp"
+#include "network/adjacency_product.hpp"
 #include "network/degree_statistics.hpp"
+#include "network/structure.hpp"
 #include "parallel/distributed_network.hpp"
+#include "parallel/distributed_product.hpp"
+#include "parallel/distributed_read.hpp"
+#include "parallel/distributed_structure.hpp"
 #include "parallel/parallel_session.hpp"
 #include "spectral/perron.hpp"
 #include "theory/critical_coupling.hpp"
@@ -122,50 +128,53 @@ void require_converged(const TheoryReport& t) {
   }
 }
 
-// The network the solvers run on, and the numbers the report quotes. For K_N the solvers run on
-// its one-node quotient (network/complete_graph.hpp: the same map, the same r, sigma^2 and R at
-// every K, and the same K_c), so the theory costs O(1) at any N; the report quotes K_N's own N,
-// lambda and mean degree.
+// The network the solvers run on, and the numbers the report quotes. Stored rows stay
+// distributed over the ranks: the solvers run replicated on every rank (their iterates are
+// O(N)) and only their products A x are shared out (parallel/distributed_product.hpp), so each
+// rank holds its own rows only. For K_N the solvers run on its one-node quotient
+// (network/complete_graph.hpp: the same map, the same r, sigma^2 and R at every K, and the same
+// K_c), so the theory costs O(1) at any N; the report quotes K_N's own N, lambda and mean degree.
 struct TheoryNetwork {
-  const Network* stored = nullptr;  ///< the input's rows, or nullptr for K_N
-  Network quotient;                 ///< K_N's quotient
-  PerronResult solved_pair;         ///< of solved()
-  NodeIndex n = 0;                  ///< of the input
-  double lambda = 0.0;              ///< of the input
-  double mean_degree = 0.0;         ///< of the input
-
-  const Network& solved() const { return stored != nullptr ? *stored : quotient; }
+  std::unique_ptr<Network> quotient;          ///< K_N's quotient, or null
+  std::unique_ptr<AdjacencyProduct> product;  ///< what the solvers run on
+  Components components;                      ///< of what the solvers run on
+  PerronResult solved_pair;                   ///< of what the solvers run on
+  NodeIndex n = 0;                            ///< of the input
+  EdgeOffset nnz = 0;                         ///< of the input
+  double lambda = 0.0;                        ///< of the input
+  double mean_degree = 0.0;                   ///< of the input
 };
 
-TheoryNetwork theory_network(const NetworkInput& input) {
+TheoryNetwork theory_network(const DistributedInput& input) {
   TheoryNetwork t;
-  if (const auto* complete = input.complete()) {
-    t.quotient = complete->quotient();
-    t.solved_pair.lambda = t.quotient.weights().front();  // a 1 x 1 matrix: its one entry
+  if (input.complete) {
+    t.quotient = std::make_unique<Network>(input.complete->quotient());
+    t.product = std::make_unique<NetworkProduct>(*t.quotient);
+    t.components = connected_components(*t.quotient);
+    t.solved_pair.lambda = t.quotient->weights().front();  // a 1 x 1 matrix: its one entry
     t.solved_pair.u = {1.0};
-    t.n = complete->n;
-    t.lambda = complete->lambda();
-    t.mean_degree = complete->degree();
+    t.n = input.complete->n;
+    t.nnz = input.complete->nnz();
+    t.lambda = input.complete->lambda();
+    t.mean_degree = input.complete->degree();
     return t;
   }
-  t.stored = &input.stored();
-  const DistributedNetwork distributed(*t.stored);
-  t.solved_pair = perron_eigenpair(distributed);
-  t.n = t.stored->size();
+  const DistributedNetwork& rows = *input.network;
+  t.product = std::make_unique<DistributedProduct>(rows);
+  t.components = distributed_components(rows);
+  t.solved_pair = perron_eigenpair(rows);
+  t.n = rows.global_size();
+  t.nnz = rows.global_nnz();
   t.lambda = t.solved_pair.lambda;
-  t.mean_degree = mean_degree(*t.stored);
+  t.mean_degree = mean_degree(*t.product);
   return t;
 }
 
 void run(const TheoryFlags& f) {
   // Step 1: the network and its Perron pair (collective over MPI ranks).
-  const NetworkInput input = f.read.read_input(f.input);
+  const DistributedInput input = f.read.read_distributed(f.input);
   const TheoryNetwork net = theory_network(input);
-  const Network& solved = net.solved();
   const PerronResult& perron = net.solved_pair;
-  // Collective, so before rank 0 goes on alone; its own entry is updated after the solves.
-  std::vector<double> peak_mb = ParallelSession::peak_memory_mb();
-  if (!is_root()) return;
   // Step 2: K_c, G, the couplings asked for.
   TheoryReport t;
   t.lambda = net.lambda;
@@ -174,25 +183,31 @@ void run(const TheoryFlags& f) {
   const auto n = static_cast<double>(net.n);
   t.Kc = critical_coupling(t.momenta, f.sigma0, n, net.lambda);
   t.Kc_equilibrium = critical_coupling(f.sigma0, n, net.lambda);
-  t.G = onset_amplitude(perron.lambda, mean_degree(solved), perron.u);
-  if (!perron.nonnegative) {
+  t.G = onset_amplitude(perron.lambda, mean_degree(*net.product), perron.u);
+  if (!perron.nonnegative && is_root()) {
     std::cerr << f.input << ": warning: the eigenvector of lambda changes sign (A reducible): "
               << "G and the first guesses assume a positive Perron vector\n";
   }
   std::vector<double> Ks = f.K;
   for (const double kappa : f.K_over_Kc) Ks.push_back(kappa * t.Kc);
-  // Step 3: the synchronized state along K (warm-started), and the K -> infinity limit.
-  const SelfConsistentSystem system(solved, perron.lambda, f.sigma0, 0.0, perron.u);
+  // Step 3: the synchronized state along K (warm-started), and the K -> infinity limit. Every
+  // rank takes the same steps (the products give every rank the same vectors), so an error is
+  // raised on all of them alike and reported once.
   SelfConsistentOptions options;
   options.tolerance = f.tolerance;
-  t.points = system.sweep(Ks, options);
-  t.large_k = solve_large_k_limit(solved, options);
-  t.R_hat_degree = degree_approximation_R_hat(solved.degrees());
+  ParallelSession::agree([&] {
+    const SelfConsistentSystem system(*net.product, net.components, perron.lambda, f.sigma0, 0.0,
+                                      perron.u);
+    t.points = system.sweep(Ks, options);
+    t.large_k = solve_large_k_limit(*net.product, options);
+  });
+  t.R_hat_degree = degree_approximation_R_hat(net.product->degrees());
+  const std::vector<double> peak_mb = ParallelSession::peak_memory_mb();
+  if (!is_root()) return;
   if (f.json) {
     nlohmann::json j = to_json(t, f, net.n);
-    j["nnz"] = input.complete() != nullptr ? input.complete()->nnz() : input.stored().nnz();
+    j["nnz"] = net.nnz;
     j["ranks"] = ParallelSession::ranks();
-    peak_mb.front() = ParallelSession::own_peak_memory_mb();
     j["peak_rss_mb_per_rank"] = peak_mb;
     std::cout << j.dump() << std::endl;
   } else {

@@ -52,7 +52,8 @@ std::vector<double> power_law_targets(NodeIndex n, const PowerLaw& law, std::uin
 Network chung_lu(const std::vector<double>& targets, LinkProbability link, std::uint64_t seed);
 
 /// The same network unit by unit (unit a: the pairs of the a-th largest target with the smaller
-/// ones), for generating it by rows over ranks. Holds the targets and their order (12 B/node).
+/// ones), for generating it by rows over ranks. Holds the order, the sorted targets and the
+/// work prefix (20 B/node).
 /// Throws as chung_lu.
 std::unique_ptr<EdgeSource> chung_lu_source(const std::vector<double>& targets,
                                             LinkProbability link, std::uint64_t seed);

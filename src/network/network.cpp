@@ -73,7 +73,7 @@ std::string check_row_entries(NodeIndex n, NodeIndex first_row,
                               const std::vector<EdgeOffset>& row_ptr,
                               const std::vector<NodeIndex>& cols,
                               const std::vector<double>& weights) {
-  const auto rows = static_cast<NodeIndex>(row_ptr.size()) - 1;
+  const auto rows = static_cast<NodeIndex>(row_ptr.size() - 1);
   for (NodeIndex r = 0; r < rows; ++r) {
     const NodeIndex i = first_row + r;
     const EdgeOffset b = row_ptr[idx(r)], e = row_ptr[idx(r) + 1];

@@ -106,7 +106,7 @@ std::vector<NodeIndex> balanced_row_starts(
 }
 
 std::vector<NodeIndex> balanced_row_starts(const std::vector<EdgeOffset>& row_ptr, int parts) {
-  const auto n = static_cast<NodeIndex>(row_ptr.size()) - 1;
+  const auto n = static_cast<NodeIndex>(row_ptr.size() - 1);
   return balanced_row_starts(n, parts, [&row_ptr](NodeIndex i) { return row_ptr[idx(i)]; });
 }
 

@@ -24,7 +24,7 @@ struct RowBlock {
   std::vector<NodeIndex> cols;         ///< global column indices, ascending within a row
   std::vector<double> weights;         ///< empty: a 0/1 block (every stored entry is 1)
 
-  NodeIndex rows() const { return static_cast<NodeIndex>(row_ptr.size()) - 1; }
+  NodeIndex rows() const { return static_cast<NodeIndex>(row_ptr.size() - 1); }
   EdgeOffset nnz() const { return static_cast<EdgeOffset>(cols.size()); }
   bool weighted() const { return !weights.empty(); }
   /// Local row r (global row first_row + r): its entries in ascending column order.

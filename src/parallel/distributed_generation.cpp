@@ -35,20 +35,27 @@ struct UnitShare {
 UnitShare count_degrees(const EdgeSource& source, std::vector<std::uint64_t>& degree) {
   const auto starts = balanced_unit_starts(source, ParallelSession::ranks());
   UnitShare share;
-  share.first = starts[at(ParallelSession::rank())];
-  share.last = starts[at(ParallelSession::rank()) + 1];
-  share.edges.resize(at(share.last - share.first));
-  degree.assign(at(source.nodes()), 0);
-  std::vector<Edge> edges;
-  for (std::int64_t k = share.first; k < share.last; ++k) {
-    edges.clear();
-    source.emit(k, edges);
-    share.edges[at(k - share.first)] = static_cast<std::uint32_t>(edges.size());
-    for (const auto& [u, v] : edges) {
-      ++degree[at(u)];
-      ++degree[at(v)];
+  // Allocations and the source may throw on one rank: all ranks learn it before the reduction.
+  ParallelSession::agree([&] {
+    share.first = starts[at(ParallelSession::rank())];
+    share.last = starts[at(ParallelSession::rank()) + 1];
+    share.edges.resize(at(share.last - share.first));
+    degree.assign(at(source.nodes()), 0);
+    std::vector<Edge> edges;
+    for (std::int64_t k = share.first; k < share.last; ++k) {
+      edges.clear();
+      source.emit(k, edges);
+      share.edges[at(k - share.first)] = static_cast<std::uint32_t>(edges.size());
+      for (const auto& [u, v] : edges) {
+        if (u == v) {
+          throw std::logic_error("distributed generation: unit " + std::to_string(k) +
+                                 " emitted a self-loop at node " + std::to_string(u));
+        }
+        ++degree[at(u)];
+        ++degree[at(v)];
+      }
     }
-  }
+  });
   ParallelSession::sum_in_place(degree);
   return share;
 }
@@ -150,13 +157,15 @@ RowBlock generate_distributed(const EdgeSource& source, std::int64_t chunk_edges
   std::vector<long long> packets;
   std::vector<long long> received;
   for (std::int64_t round = 0; round < rounds; ++round) {
-    edges.clear();
-    if (round + 1 < static_cast<std::int64_t>(rounds_here.size())) {
-      for (std::int64_t k = rounds_here[at(round)]; k < rounds_here[at(round) + 1]; ++k) {
-        source.emit(k, edges);
+    ParallelSession::agree([&] {
+      edges.clear();
+      if (round + 1 < static_cast<std::int64_t>(rounds_here.size())) {
+        for (std::int64_t k = rounds_here[at(round)]; k < rounds_here[at(round) + 1]; ++k) {
+          source.emit(k, edges);
+        }
       }
-    }
-    pack_by_owner(edges, row_starts, owner, packets);
+      pack_by_owner(edges, row_starts, owner, packets);
+    });
     Tpetra::Distributor distributor(comm);
     received.resize(distributor.createFromSends(Teuchos::ArrayView<const int>(owner)));
     distributor.doPostsAndWaits<long long>(Teuchos::ArrayView<const long long>(packets), 1,
@@ -177,6 +186,11 @@ RowBlock generate_distributed(const EdgeSource& source, std::int64_t chunk_edges
     std::sort(block.cols.begin() + block.row_ptr[at(r)],
               block.cols.begin() + block.row_ptr[at(r) + 1]);
   }
+  // A pair emitted twice (by two units, or twice by one) would be a duplicate entry.
+  ParallelSession::agree([&] {
+    const std::string why = check_row_block(block);
+    if (!why.empty()) throw std::logic_error("distributed generation: " + why);
+  });
   return block;
 }
 

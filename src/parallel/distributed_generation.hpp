@@ -2,12 +2,14 @@
 // Generating a random network by rows over the ranks (issue #15 item 2): no rank ever holds
 // more than its own rows. The units of an EdgeSource (network/edge_source.hpp) are split by
 // expected work; every rank emits its units twice: once to count the degrees (an N-vector
-// summed over the ranks, 8 B per node, from which the rows are cut by stored entries exactly
-// as a reader cuts them, balanced_row_starts), once to send each edge's two entries (u, v) and
-// (v, u) to the ranks that own rows u and v, through a Tpetra::Distributor, in rounds of at
-// most `chunk_edges` edges per rank so the transient buffers stay bounded (~48 B per edge of a
-// round). Each row is then sorted, so the block equals the rows network_from_source(source)
-// would give, for any rank count.
+// summed over the ranks, from which the rows are cut by stored entries exactly as a reader cuts
+// them, balanced_row_starts; O(N) transient on every rank, ~24 B per node at its peak: the
+// counts, the reduction's copy, then the global row pointers), once to send each edge's two
+// entries (u, v) and (v, u) to the ranks that own rows u and v, through a Tpetra::Distributor,
+// in rounds of at most `chunk_edges` edges per rank (~40 B per edge sent; what a rank receives
+// in a round is up to P times that in the worst case, 2 chunk_edges entries from each rank). Each
+// row is then sorted, so the block equals the rows network_from_source(source) would give, for any
+// rank count.
 #include <cstdint>
 
 #include "network/edge_source.hpp"

@@ -3,6 +3,7 @@
 // for a network distributed by rows: each rank links the entries of its own rows in a
 // ParityForest, and the forests merge up a binary tree of ranks (log2 P steps, 8 bytes per node
 // per message), so no rank holds another's rows.
+#include "network/structure.hpp"
 #include "parallel/distributed_network.hpp"
 
 namespace hmfnet {
@@ -16,5 +17,9 @@ struct NetworkStructure {
 /// Collective; the same answer on every rank. The complete graph held implicitly: its closed
 /// forms (one component of n; bipartite only for n = 2 without self-loops).
 NetworkStructure distributed_structure(const DistributedNetwork& network);
+
+/// The components themselves (labels numbered by first node, as connected_components numbers
+/// them: the same Components), on every rank (8 bytes per node travel from rank 0). Collective.
+Components distributed_components(const DistributedNetwork& network);
 
 }  // namespace hmfnet

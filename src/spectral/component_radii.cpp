@@ -4,16 +4,19 @@
 #include <cmath>
 #include <cstddef>
 
-#include "network/sparse_product.hpp"
-
 namespace hmfnet {
 
 ComponentRadii component_radii(const Network& network, const Components& components,
                                double tolerance, int max_iterations) {
-  const auto n = static_cast<std::size_t>(network.size());
+  return component_radii(NetworkProduct(network), components, tolerance, max_iterations);
+}
+
+ComponentRadii component_radii(const AdjacencyProduct& product, const Components& components,
+                               double tolerance, int max_iterations) {
+  const auto n = static_cast<std::size_t>(product.size());
   const auto count = static_cast<std::size_t>(components.count);
   const auto label = [&](std::size_t i) { return static_cast<std::size_t>(components.label[i]); };
-  const std::vector<double> degrees = network.degrees();
+  const std::vector<double>& degrees = product.degrees();
   std::vector<double> x(n), y(n), ax(n), norm2(count), rayleigh(count);
   for (std::size_t i = 0; i < n; ++i) x[i] = degrees[i] + 1.0;
   ComponentRadii out;
@@ -21,7 +24,7 @@ ComponentRadii component_radii(const Network& network, const Components& compone
   for (int it = 1; it <= max_iterations; ++it) {
     std::fill(norm2.begin(), norm2.end(), 0.0);
     std::fill(rayleigh.begin(), rayleigh.end(), 0.0);
-    multiply(network, x, ax);
+    product.apply(x, ax);
     for (std::size_t u = 0; u < n; ++u) {
       y[u] = ax[u] + x[u];
       norm2[label(u)] += x[u] * x[u];

@@ -12,6 +12,7 @@
 // moved by more than `tolerance` relative in one iteration, or after max_iterations.
 #include <vector>
 
+#include "network/adjacency_product.hpp"
 #include "network/network.hpp"
 #include "network/structure.hpp"
 
@@ -23,6 +24,8 @@ struct ComponentRadii {
   bool converged = false;
 };
 
+ComponentRadii component_radii(const AdjacencyProduct& product, const Components& components,
+                               double tolerance = 1e-12, int max_iterations = 20000);
 ComponentRadii component_radii(const Network& network, const Components& components,
                                double tolerance = 1e-12, int max_iterations = 20000);
 

@@ -313,7 +313,7 @@ PerronResult perron_eigenpair(const DistributedNetwork& network, const PerronOpt
     if (options.bound_lambda2_first) {
       const double threshold = r.lambda / options.gap_ratio;
       const SecondEigenvalueBound b = bound_second_eigenvalue(
-          network, r.u,
+          network, r.u, r.lambda,
           [&](double lower, double upper) { return upper < threshold || lower >= threshold; });
       r.lambda2_lower = b.lower;
       r.lambda2_upper = b.upper;

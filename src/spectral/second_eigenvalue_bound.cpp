@@ -26,20 +26,6 @@ void axpy(double alpha, const Local& x, Local& y) {
 // v <- P v = v - u (u^T v).
 void deflate(const Local& u, Local& v) { axpy(-dot(u, v), u, v); }
 
-// The largest absolute row sum over all ranks: >= |lambda_min| (Gershgorin).
-double gershgorin_shift(const DistributedNetwork& network) {
-  const auto& a = network.local_adjacency();
-  double largest = 0.0;
-  for (std::size_t r = 0; r + 1 < a.row_ptr.size(); ++r) {
-    double row = 0.0;
-    for (auto k = a.row_ptr[r]; k < a.row_ptr[r + 1]; ++k) {
-      row += a.weights.empty() ? 1.0 : std::abs(a.weights[static_cast<std::size_t>(k)]);
-    }
-    largest = std::max(largest, row);
-  }
-  return ParallelSession::max(largest);
-}
-
 // Largest eigenvalue of the k x k tridiagonal matrix (alpha, beta).
 double largest_ritz_value(const std::vector<double>& alpha, const std::vector<double>& beta) {
   const auto k = static_cast<Eigen::Index>(alpha.size());
@@ -54,7 +40,7 @@ double largest_ritz_value(const std::vector<double>& alpha, const std::vector<do
 }  // namespace
 
 SecondEigenvalueBound bound_second_eigenvalue(const DistributedNetwork& network,
-                                              const std::vector<double>& u,
+                                              const std::vector<double>& u, double lambda,
                                               const std::function<bool(double, double)>& decided,
                                               int max_steps, double failure_probability,
                                               std::uint64_t seed) {
@@ -68,10 +54,11 @@ SecondEigenvalueBound bound_second_eigenvalue(const DistributedNetwork& network,
   const double norm = std::sqrt(dot(v, v));
   for (double& x : v) x /= norm;
 
-  const double shift = gershgorin_shift(network);
-  // sqrt(eps_k) (2k - 1) = log(1.648 sqrt(n) / delta).
-  const double log_factor =
-      std::log(1.648 * std::sqrt(static_cast<double>(network.global_size())) / failure_probability);
+  const double shift = lambda * (1.0 + 1e-6);
+  // sqrt(eps_k) (2k - 1) = log(1.648 sqrt(n) / delta_k), delta_k = 6 delta / (pi^2 k^2).
+  const double pi = std::acos(-1.0);
+  const double log_factor = std::log(1.648 * std::sqrt(static_cast<double>(network.global_size())) *
+                                     pi * pi / (6.0 * failure_probability));
   SecondEigenvalueBound bound;
   bound.failure_probability = failure_probability;
   bound.lower = -std::numeric_limits<double>::infinity();
@@ -87,7 +74,7 @@ SecondEigenvalueBound bound_second_eigenvalue(const DistributedNetwork& network,
     const double theta = largest_ritz_value(alpha, beta);
     bound.steps = k;
     bound.lower = std::max(bound.lower, theta);
-    const double root_eps = log_factor / (2.0 * k - 1.0);
+    const double root_eps = (log_factor + 2.0 * std::log(static_cast<double>(k))) / (2.0 * k - 1.0);
     const double eps = root_eps * root_eps;
     if (eps < 1.0) {
       bound.upper = std::min(bound.upper, (bound.lower + shift) / (1.0 - eps) - shift);

@@ -75,17 +75,22 @@ double degree_approximation_R_hat(const PowerLaw& law) {
 }
 
 LargeKLimit solve_large_k_limit(const Network& network, const SelfConsistentOptions& options) {
+  return solve_large_k_limit(NetworkProduct(network), options);
+}
+
+LargeKLimit solve_large_k_limit(const AdjacencyProduct& product,
+                                const SelfConsistentOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<double> d = network.degrees();
-  const double mean = mean_degree(network);
+  const std::vector<double>& d = product.degrees();
+  const double mean = mean_degree(product);
   if (!(mean > 0.0)) throw ParameterError("network", "no edges", "a network with edges");
   // First guess from eq:rd: r_n = B d_n, B = R_hat / N, eta = B^2 N ||d||.
   const double R = degree_approximation_R_hat(d);
-  const double n = static_cast<double>(network.size());
+  const double n = static_cast<double>(product.size());
   const double B = R / n;
   std::vector<double> r(d.size());
   for (std::size_t i = 0; i < d.size(); ++i) r[i] = B * d[i];
-  const SelfConsistentMap map(network, 0.0);
+  const SelfConsistentMap map(product, 0.0);
   const MapFixedPoint fp = iterate_self_consistent_map(map, r, B * B * n * mean, options);
   LargeKLimit out;
   out.r_hat = fp.r;

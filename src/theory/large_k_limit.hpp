@@ -36,6 +36,9 @@ struct LargeKLimit {
 
 /// eq:KtoInfinity on a network with edges (throws ParameterError otherwise).
 LargeKLimit solve_large_k_limit(const Network& network, const SelfConsistentOptions& options = {});
+/// The same on any AdjacencyProduct (collective for distributed rows).
+LargeKLimit solve_large_k_limit(const AdjacencyProduct& product,
+                                const SelfConsistentOptions& options = {});
 
 /// eq:rd for a degree sequence (all d_m >= 0, mean > 0; throws ParameterError otherwise).
 double degree_approximation_R_hat(const std::vector<double>& degrees);

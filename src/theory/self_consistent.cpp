@@ -31,8 +31,8 @@ std::string short_number(double x) {
 
 // The shape of the first guess: the Perron vector if it is usable (right size, one sign),
 // otherwise the degrees (u_n ~ d_n for uncorrelated networks), scaled to sum 1.
-std::vector<double> guess_shape(const Network& network, std::vector<double> perron) {
-  const auto n = static_cast<std::size_t>(network.size());
+std::vector<double> guess_shape(const AdjacencyProduct& product, std::vector<double> perron) {
+  const auto n = static_cast<std::size_t>(product.size());
   if (!perron.empty() && perron.size() != n) {
     throw ParameterError("Perron vector", std::to_string(perron.size()) + " entries",
                          std::to_string(n) + " entries (one per node)");
@@ -40,7 +40,8 @@ std::vector<double> guess_shape(const Network& network, std::vector<double> perr
   const double total = std::accumulate(perron.begin(), perron.end(), 0.0);
   const bool one_sign = !perron.empty() && std::all_of(perron.begin(), perron.end(),
                                                        [&](double x) { return x * total >= 0.0; });
-  std::vector<double> shape = one_sign ? std::move(perron) : network.degrees();
+  // A copy of the degrees only when the Perron vector is not used.
+  std::vector<double> shape = one_sign ? std::move(perron) : std::vector<double>(product.degrees());
   const double sum = std::accumulate(shape.begin(), shape.end(), 0.0);
   for (auto& x : shape) x = std::abs(x / sum);
   return shape;
@@ -69,7 +70,25 @@ double initial_coherence(const Network& network, const std::vector<double>& thet
 
 SelfConsistentSystem::SelfConsistentSystem(const Network& network, double lambda, double sigma0,
                                            double coherence, std::vector<double> perron)
-    : m_network(network), m_lambda(lambda), m_sigma0(sigma0), m_coherence(coherence) {
+    : SelfConsistentSystem(std::make_shared<NetworkProduct>(network), connected_components(network),
+                           lambda, sigma0, coherence, std::move(perron)) {}
+
+SelfConsistentSystem::SelfConsistentSystem(const AdjacencyProduct& product, Components components,
+                                           double lambda, double sigma0, double coherence,
+                                           std::vector<double> perron)
+    // A non-owning pointer (empty control block): the caller keeps the product alive.
+    : SelfConsistentSystem(
+          std::shared_ptr<const AdjacencyProduct>(std::shared_ptr<void>(), &product),
+          std::move(components), lambda, sigma0, coherence, std::move(perron)) {}
+
+SelfConsistentSystem::SelfConsistentSystem(std::shared_ptr<const AdjacencyProduct> product,
+                                           Components components, double lambda, double sigma0,
+                                           double coherence, std::vector<double> perron)
+    : m_product(std::move(product)),
+      m_lambda(lambda),
+      m_sigma0(sigma0),
+      m_coherence(coherence),
+      m_components(std::move(components)) {
   if (!(sigma0 > 0.0) || !std::isfinite(sigma0)) {
     throw ParameterError("sigma0", std::to_string(sigma0), "0 < sigma0 < inf");
   }
@@ -79,14 +98,19 @@ SelfConsistentSystem::SelfConsistentSystem(const Network& network, double lambda
   if (!std::isfinite(coherence)) {
     throw ParameterError("initial coherence", std::to_string(coherence), "a finite number");
   }
-  m_mean_degree = hmfnet::mean_degree(network);
+  if (m_components.label.size() != static_cast<std::size_t>(m_product->size())) {
+    throw ParameterError("components", std::to_string(m_components.label.size()) + " labels",
+                         std::to_string(m_product->size()) + " (one per node)");
+  }
+  m_mean_degree = hmfnet::mean_degree(*m_product);
   if (!(m_mean_degree > 0.0)) {
     throw ParameterError("network", "no edges", "a network with edges");
   }
-  m_shape = guess_shape(network, std::move(perron));
+  m_shape = guess_shape(*m_product, std::move(perron));
   m_onset_G = onset_amplitude(lambda, m_mean_degree, m_shape);
-  m_components = connected_components(network);
-  if (m_components.count > 1) m_component_lambda = component_radii(network, m_components).lambda;
+  if (m_components.count > 1) {
+    m_component_lambda = component_radii(*m_product, m_components).lambda;
+  }
 }
 
 std::vector<char> SelfConsistentSystem::active_components(double K, double mu0) const {
@@ -94,7 +118,7 @@ std::vector<char> SelfConsistentSystem::active_components(double K, double mu0) 
   // start). The component of the largest lambda_c is always active: the solve is only reached
   // above the global threshold, and its power-iteration lambda_c may fall a hair below lambda.
   std::vector<char> active(m_component_lambda.size(), 0);
-  const double n = static_cast<double>(m_network.size());
+  const double n = static_cast<double>(m_product->size());
   std::size_t largest = 0;
   for (std::size_t c = 0; c < active.size(); ++c) {
     active[c] = K * m_component_lambda[c] > 2.0 * n * mu0 ? 1 : 0;
@@ -107,7 +131,7 @@ std::vector<char> SelfConsistentSystem::active_components(double K, double mu0) 
 std::vector<double> SelfConsistentSystem::component_shape(const std::vector<char>& active) const {
   // u (or d) on the Perron component, mixed with d so that every active component starts
   // coherent; exactly 0 on the inactive ones (a fixed point of the map: they stay incoherent).
-  const std::vector<double> degrees = m_network.degrees();
+  const std::vector<double>& degrees = m_product->degrees();
   const double total_degree = std::accumulate(degrees.begin(), degrees.end(), 0.0);
   std::vector<double> shape(m_shape.size(), 0.0);
   double sum = 0.0;
@@ -122,7 +146,7 @@ std::vector<double> SelfConsistentSystem::component_shape(const std::vector<char
 }
 
 double SelfConsistentSystem::threshold() const {
-  const double n = static_cast<double>(m_network.size());
+  const double n = static_cast<double>(m_product->size());
   const double denominator = m_lambda + 2.0 * n * m_coherence;
   if (!(denominator > 0.0)) return std::numeric_limits<double>::infinity();
   return 2.0 * n * m_sigma0 * m_sigma0 / denominator;
@@ -150,7 +174,7 @@ SelfConsistentSolution SelfConsistentSystem::solve(double K, const SelfConsisten
   out.K = K;
   out.K_over_Kc = K / threshold();
   const double mu0 = m_sigma0 * m_sigma0 - K * m_coherence;
-  const auto n = static_cast<std::size_t>(m_network.size());
+  const auto n = static_cast<std::size_t>(m_product->size());
   if (out.K_over_Kc <= 1.0) {
     out.status = SolveStatus::incoherent;
     out.r.assign(n, 0.0);
@@ -207,7 +231,7 @@ bool SelfConsistentSystem::drop_decayed(std::vector<char>& active, double K, dou
   // Every active component below its threshold at the failed attempt's last variance at once
   // (many equal small components would otherwise cost one full attempt each); the weakest if
   // none is, as long as another stays active.
-  const double n = static_cast<double>(m_network.size());
+  const double n = static_cast<double>(m_product->size());
   std::size_t count = 0, dropped = 0;
   for (std::size_t c = 0; c < active.size(); ++c) count += active[c] ? 1u : 0u;
   for (std::size_t c = 0; c < active.size() && count - dropped > 1; ++c) {
@@ -238,7 +262,7 @@ void SelfConsistentSystem::attempt(SelfConsistentSolution& out,
                                    const std::vector<double>* shape) const {
   const double K = out.K;
   const double mu0 = m_sigma0 * m_sigma0 - K * m_coherence;
-  const auto n = static_cast<std::size_t>(m_network.size());
+  const auto n = static_cast<std::size_t>(m_product->size());
   double mu = mu0;
   std::vector<double> r = first_guess(out.K_over_Kc, mu, shape);
   const double R_guess = global_order_parameter(r, m_mean_degree);
@@ -259,7 +283,7 @@ void SelfConsistentSystem::attempt(SelfConsistentSolution& out,
                                      (warm_start->K_over_Kc * R_previous * R_previous);
     if (mu_warm > 0.0) mu = mu_warm;  // else (mu0 < 0 far from the previous K) the cold guess
   }
-  const SelfConsistentMap map(m_network, mu0 / K);
+  const SelfConsistentMap map(*m_product, mu0 / K);
   const MapFixedPoint fp = iterate_self_consistent_map(map, r, mu / K, options);
   out.r = fp.r;
   out.sigma2 = fp.eta * K;

@@ -24,9 +24,11 @@
 // above their own threshold (K lambda_c / (2 N mu0) > 1, spectral/component_radii.hpp) start
 // coherent (r = 0 on a component is a fixed point of the map); see docs/theory.md. Measured
 // costs: docs/theory.md.
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "network/adjacency_product.hpp"
 #include "network/network.hpp"
 #include "network/structure.hpp"
 #include "theory/self_consistent_map.hpp"
@@ -61,6 +63,10 @@ class SelfConsistentSystem {
   /// edges, or a Perron vector of the wrong size.
   SelfConsistentSystem(const Network& network, double lambda, double sigma0, double coherence = 0.0,
                        std::vector<double> perron = {});
+  /// The same on any AdjacencyProduct (rows distributed over ranks: every rank runs the same
+  /// steps), given its connected components; `product` must outlive the system.
+  SelfConsistentSystem(const AdjacencyProduct& product, Components components, double lambda,
+                       double sigma0, double coherence = 0.0, std::vector<double> perron = {});
 
   /// K at which kappa = 1: 2 N sigma0^2 / (lambda + 2 N c0) (infinite if lambda + 2 N c0 <= 0).
   double threshold() const;
@@ -76,6 +82,8 @@ class SelfConsistentSystem {
                                             const SelfConsistentOptions& options = {}) const;
 
  private:
+  SelfConsistentSystem(std::shared_ptr<const AdjacencyProduct> product, Components components,
+                       double lambda, double sigma0, double coherence, std::vector<double> perron);
   /// r of the first guess at K/K_c = kappa; mu: in, the incoherent variance mu0; out, the guess.
   /// shape: the guess's shape (sum 1), m_shape when null.
   std::vector<double> first_guess(double kappa, double& mu,
@@ -95,7 +103,7 @@ class SelfConsistentSystem {
   /// iterate's variance), or else the weakest; false if nothing could be dropped.
   bool drop_decayed(std::vector<char>& active, double K, double sigma2) const;
 
-  const Network& m_network;
+  std::shared_ptr<const AdjacencyProduct> m_product;  // owned only when made from a Network
   double m_lambda;
   double m_sigma0;
   double m_coherence;

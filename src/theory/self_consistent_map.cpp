@@ -6,7 +6,6 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "network/sparse_product.hpp"
 #include "theory/anderson_acceleration.hpp"
 #include "theory/bessel_ratio.hpp"
 
@@ -24,20 +23,30 @@ std::string solve_status_name(SolveStatus status) {
   return "unknown";
 }
 
+SelfConsistentMap::SelfConsistentMap(const AdjacencyProduct& product, double offset)
+    // A non-owning pointer (empty control block): the caller keeps the product alive.
+    : m_product(std::shared_ptr<void>(), &product),
+      m_offset(offset),
+      m_v(static_cast<std::size_t>(product.size())) {
+  if (product.size() < 1) throw ParameterError("self-consistent map: network", "0 nodes", "N >= 1");
+}
+
 SelfConsistentMap::SelfConsistentMap(const Network& network, double offset)
-    : m_network(network), m_offset(offset), m_v(static_cast<std::size_t>(network.size())) {
+    : m_product(std::make_shared<NetworkProduct>(network)),
+      m_offset(offset),
+      m_v(static_cast<std::size_t>(network.size())) {
   if (network.size() < 1) throw ParameterError("self-consistent map: network", "0 nodes", "N >= 1");
 }
 
 void SelfConsistentMap::apply(const std::vector<double>& r, double eta, std::vector<double>& r_out,
                               double& eta_out) const {
-  const NodeIndex n = m_network.size();
+  const NodeIndex n = m_product->size();
   const double inv_eta = 1.0 / eta;
   const double inv_n = 1.0 / static_cast<double>(n);
   double* v = m_v.data();
 #pragma omp parallel for schedule(static)
   for (NodeIndex i = 0; i < n; ++i) v[i] = bessel_ratio(r[static_cast<std::size_t>(i)] * inv_eta);
-  multiply(m_network, m_v, r_out);
+  m_product->apply(m_v, r_out);
   for (double& x : r_out) x *= inv_n;
   double energy = 0.0;
   for (NodeIndex i = 0; i < n; ++i) energy += r[static_cast<std::size_t>(i)] * v[i];
@@ -79,25 +88,26 @@ double relative_residual(const std::vector<double>& r, const std::vector<double>
 constexpr double k_max_log_step = 0.5;
 
 // A node the guess puts at r = 0 stays there (it is not an unknown), which is a fixed point only
-// if all its neighbours are 0 too, i.e. the zeros form whole components.
-void require_closed_zero_set(const Network& network, const std::vector<double>& r) {
-  for (NodeIndex i = 0; i < network.size(); ++i) {
-    if (r[static_cast<std::size_t>(i)] != 0.0) continue;
-    for (const RowEntry entry : network.row(i)) {
-      if (r[static_cast<std::size_t>(entry.col)] != 0.0) {
-        throw ParameterError("self-consistent map: guess",
-                             "0 at node " + std::to_string(i) + " but not at its neighbour " +
-                                 std::to_string(entry.col),
-                             "zeros that cover whole components");
-      }
+// if all its neighbours are 0 too, i.e. the zeros form whole components: A applied to the
+// indicator of the non-zeros vanishes on every zero (one product, so it works on distributed
+// rows too; with positive weights, as the theory assumes).
+void require_closed_zero_set(const AdjacencyProduct& product, const std::vector<double>& r) {
+  std::vector<double> nonzero(r.size()), reached;
+  for (std::size_t i = 0; i < r.size(); ++i) nonzero[i] = r[i] != 0.0 ? 1.0 : 0.0;
+  product.apply(nonzero, reached);
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    if (r[i] == 0.0 && reached[i] != 0.0) {
+      throw ParameterError("self-consistent map: guess",
+                           "0 at node " + std::to_string(i) + " but not at all its neighbours",
+                           "zeros that cover whole components");
     }
   }
 }
 
 class LogVariables {
  public:
-  LogVariables(const Network& network, const std::vector<double>& guess) {
-    const std::vector<double> d = network.degrees();
+  LogVariables(const AdjacencyProduct& product, const std::vector<double>& guess) {
+    const std::vector<double>& d = product.degrees();
     for (std::size_t i = 0; i < d.size(); ++i) {
       if (d[i] > 0.0 && guess[i] > 0.0) m_active.push_back(i);
     }
@@ -133,8 +143,8 @@ MapFixedPoint iterate_self_consistent_map(const SelfConsistentMap& map,
   if (!(eta > 0.0) || !std::isfinite(eta)) {
     throw ParameterError("self-consistent map: guess eta", std::to_string(eta), "0 < eta < inf");
   }
-  require_closed_zero_set(map.network(), r);
-  const LogVariables variables(map.network(), r);
+  require_closed_zero_set(map.product(), r);
+  const LogVariables variables(map.product(), r);
   std::vector<double> r_in(n, 0.0), r_out(n, 0.0);
   const FixedPointMap log_map = [&](const std::vector<double>& x, std::vector<double>& gx) {
     const double eta_in = variables.unpack(x, r_in);

@@ -8,9 +8,11 @@
 // (eq:sigmaSqEq: each rotor's own potential energy r_n <cos theta_n>).
 // Both solvers (self_consistent.hpp, large_k_limit.hpp) iterate this map with
 // anderson_acceleration.hpp; this file holds what they share.
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "network/adjacency_product.hpp"
 #include "network/network.hpp"
 
 namespace hmfnet {
@@ -32,12 +34,14 @@ struct SelfConsistentOptions {
 
 class SelfConsistentMap {
  public:
-  /// Keeps a reference to `network`, which must outlive the map. Not thread-safe (scratch space).
+  /// Keeps a reference to `product`, which must outlive the map. Not thread-safe (scratch space).
+  SelfConsistentMap(const AdjacencyProduct& product, double offset);
+  /// On a Network (which must outlive the map) through its own NetworkProduct.
   SelfConsistentMap(const Network& network, double offset);
 
-  NodeIndex size() const { return m_network.size(); }
+  NodeIndex size() const { return m_product->size(); }
   double offset() const { return m_offset; }
-  const Network& network() const { return m_network; }
+  const AdjacencyProduct& product() const { return *m_product; }
 
   /// One application (eta > 0). Rows are threaded with a static schedule, the sum over n is
   /// serial: the result does not depend on the thread count.
@@ -45,7 +49,7 @@ class SelfConsistentMap {
              double& eta_out) const;
 
  private:
-  const Network& m_network;
+  std::shared_ptr<const AdjacencyProduct> m_product;  // owned only when made from a Network
   double m_offset;
   mutable std::vector<double> m_v;
 };

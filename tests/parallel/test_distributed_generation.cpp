@@ -15,6 +15,7 @@
 #include "parallel/distributed_network_file.hpp"
 #include "parallel/parallel_session.hpp"
 #include "support/shared_file.hpp"
+#include "support/small_networks.hpp"
 
 using namespace hmfnet;
 using Catch::Matchers::Contains;
@@ -83,4 +84,29 @@ TEST_CASE("Writing row blocks fails on every rank, leaving no file, for a bad de
   CHECK_THAT(collective_message([&] { write_distributed_network_hdf5(file.path(), shifted); }),
              Contains("do not tile"));
   CHECK_FALSE(std::filesystem::exists(file.path()));
+}
+
+TEST_CASE("Generation leaves ranks without rows or units when there is little to share",
+          "[distributed][generation]") {
+  // One edge, no edges, and fewer nodes than ranks at 3 ranks.
+  for (const auto& params : {ErdosRenyiParameters{2, 1.0, 1}, ErdosRenyiParameters{5, 0.0, 1},
+                             ErdosRenyiParameters{1, 0.5, 1}}) {
+    INFO("N = " << params.n << ", q = " << params.q);
+    const auto source = erdos_renyi_source(params);
+    check_block(generate_distributed(*source, 1), network_from_source(*source));
+  }
+}
+
+TEST_CASE("Weighted row blocks written by all ranks make the file written serially",
+          "[distributed][generation]") {
+  const Network net = test::weighted_ring(31);
+  const auto starts = balanced_row_starts(net.row_ptr(), ParallelSession::ranks());
+  const auto me = static_cast<std::size_t>(ParallelSession::rank());
+  const RowBlock block = slice_rows(net, starts[me], starts[me + 1] - starts[me]);
+  const SharedFile file("hmfnet_weighted_blocks");
+  write_distributed_network_hdf5(file.path(), block);
+  const Network read = read_network_hdf5(file.path()).network;
+  CHECK(read.row_ptr() == net.row_ptr());
+  CHECK(read.cols() == net.cols());
+  CHECK(read.weights() == net.weights());
 }

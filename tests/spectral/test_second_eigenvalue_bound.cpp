@@ -44,12 +44,15 @@ TEST_CASE("Lanczos bounds bracket lambda_2 at every step count [ER, SF, SBM N=60
     const double exact = dense_lambda2(net);
     for (const int steps : {5, 20, 60}) {
       const SecondEigenvalueBound b = bound_second_eigenvalue(
-          d, perron.u, [](double, double) { return false; }, steps);
+          d, perron.u, perron.lambda, [](double, double) { return false; }, steps);
       INFO("lambda " << perron.lambda << ", dense lambda_2 " << exact << ", after " << b.steps
                      << " steps: [" << b.lower << ", " << b.upper << "]");
       CHECK(b.steps == steps);
       CHECK(b.lower <= exact + ritz_slack(perron.lambda, steps));
       CHECK(b.upper >= exact - ritz_slack(perron.lambda, steps));
+      // At 5 steps eps_k >= 1 (no upper bound yet, +inf); from 20 steps on it is finite
+      // (N = 600: eps_20 = 0.38, eps_60 = 0.048), so the bracket above is not vacuous.
+      CHECK(std::isfinite(b.upper) == (steps >= 20));
     }
   }
 }
@@ -62,7 +65,7 @@ TEST_CASE("Lanczos run to breakdown gives lambda_2 itself [ring, star, K_ab, N=8
     const DistributedNetwork d(net);
     const PerronResult perron = perron_eigenpair(d);
     const SecondEigenvalueBound b = bound_second_eigenvalue(
-        d, perron.u, [](double, double) { return false; }, net.size());
+        d, perron.u, perron.lambda, [](double, double) { return false; }, net.size());
     const double exact = dense_lambda2(net);
     INFO("N = " << net.size() << ", dense lambda_2 " << exact << ", " << b.steps << " steps");
     CHECK(b.exact);

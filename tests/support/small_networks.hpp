@@ -5,6 +5,8 @@
 //   complete bipartite  K_{a,b}: lambda = sqrt(ab), bipartite
 //   ring / circulant    d-regular: lambda = d
 //   two disjoint cliques disconnected
+#include <algorithm>
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -38,6 +40,26 @@ inline Network circulant(NodeIndex n, NodeIndex half_degree) {
   for (NodeIndex i = 0; i < n; ++i)
     for (NodeIndex s = 1; s <= half_degree; ++s) e.emplace_back(i, (i + s) % n);
   return Network::from_undirected_edges(n, e);
+}
+
+/// A ring (i linked to i +- 1 mod n, n >= 3) whose weights differ from edge to edge (a
+/// symmetric function of the two ends, in [0.5, 1.5]).
+inline Network weighted_ring(NodeIndex n) {
+  std::vector<EdgeOffset> row_ptr{0};
+  std::vector<NodeIndex> cols;
+  std::vector<double> weights;
+  for (NodeIndex i = 0; i < n; ++i) {
+    for (const NodeIndex j : {(i + n - 1) % n, (i + 1) % n}) {
+      cols.push_back(j);
+      weights.push_back(1.0 + 0.5 * std::sin(0.1 * (std::min(i, j) + 3.0 * std::max(i, j))));
+    }
+    if (cols[cols.size() - 2] > cols.back()) {
+      std::swap(cols[cols.size() - 2], cols.back());
+      std::swap(weights[weights.size() - 2], weights.back());
+    }
+    row_ptr.push_back(static_cast<EdgeOffset>(cols.size()));
+  }
+  return Network::from_csr(n, std::move(row_ptr), std::move(cols), std::move(weights));
 }
 
 /// Two cliques K_a and K_b with no edge between them.
