@@ -6,11 +6,16 @@
 # (issue #15, items 2 and 3). Each rank reports its own peak
 # (getrusage) in the JSON (`peak_rss_mb_per_rank`); the budget is summed over the ranks:
 #   10 bytes per stored entry + 400 bytes per node + 250 MB per rank.
+# The demonstration of item 5 (ER N = 10^7, degree 100: 10^9 stored entries, on 2 ranks) is
+#   bench/scale_out_memory.sh build 10000000 100 2
+# (~4 GB of HDF5 in TMPDIR, ~10 minutes here).
 # Usage: bench/scale_out_memory.sh [BUILD_DIR (default build)] [N (default 1000000)] [DEGREE]
+#        [RANK COUNTS (default "1 2")]
 set -euo pipefail
 build=${1:-build}
 n=${2:-1000000}
 degree=${3:-100}
+rank_counts=${4:-1 2}
 hmfnet="$build/bin/hmfnet"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -33,7 +38,7 @@ print('%-9s %d rank(s): peak MB per rank %s, sum %.0f MB = %.2f bytes per stored
                            sum(peak) * 2**20 / nnz, budget))
 "
 }
-for ranks in 1 2; do
+for ranks in $rank_counts; do
   mpi=(mpirun --allow-run-as-root --oversubscribe -np "$ranks")
   start=$(date +%s.%N)
   "${mpi[@]}" "$hmfnet" generate er --n "$n" --mean-degree "$degree" --seed 1 -o "$net" 2>&1 |

@@ -11,7 +11,8 @@ packages=(
   libtrilinos-tpetra-dev libtrilinos-anasazi-dev libtrilinos-belos-dev libtrilinos-aztecoo-dev
   libtrilinos-xpetra-dev libtrilinos-thyra-dev libtrilinos-epetraext-dev libtrilinos-triutils-dev
   libtrilinos-epetra-dev libtrilinos-rtop-dev libtrilinos-kokkos-kernels-dev libtrilinos-teuchos-dev
-  libtrilinos-kokkos-dev
+  libtrilinos-kokkos-dev libtrilinos-zoltan2-dev libtrilinos-zoltan-dev
+  libptscotch-dev  # Zoltan2's headers call PT-Scotch: linked though we use PHG (graph_partition.cpp)
   libcli11-dev nlohmann-json3-dev libbenchmark-dev
   python3 python3-numpy python3-h5py python3-matplotlib
   clang libclang-rt-dev libomp-dev  # ci/fuzz.sh: libFuzzer and sanitizer runtimes, OpenMP for clang

@@ -117,6 +117,23 @@ void add_rewire_options(CLI::App& app, RewireFlags& f, const Run& run) {
   c->callback(run);
 }
 
+void add_convert_options(CLI::App& app, ConvertFlags& f, const Run& run) {
+  auto* c = app.add_subcommand(
+      "convert", "Convert a network file to hmfnet HDF5, in parallel (each rank parses its part)");
+  c->add_option("input", f.input, "Network file (.mtx, .h5, edge list)")->required();
+  c->add_option("-o,--output", f.output, "Output file (.h5)")->required();
+  c->add_option(
+       "--partition", f.partition,
+       "Renumber the nodes so that each of P parts found by Zoltan2 (Zoltan PHG "
+       "hypergraph partitioning, parts of equal stored entries) is contiguous: P row blocks "
+       "then import fewer ghosts per step (0: keep the order)")
+      ->check(CLI::Range(0, 65536));
+  c->add_option("--seed", f.seed, "Seed of the partitioner's random choices (with --partition)")
+      ->check(k_seed);
+  f.read.add_to(c);
+  c->callback(run);
+}
+
 void add_spectrum_options(CLI::App& app, SpectrumFlags& f, const Run& run) {
   auto* c = app.add_subcommand(
       "spectrum", "Largest eigenvalue (Anasazi, distributed over MPI ranks), rho, G, structure");

@@ -59,6 +59,14 @@ struct RewireFlags {
   ReadFlags read;
 };
 
+struct ConvertFlags {
+  std::string input;
+  std::string output;
+  int partition = 0;
+  std::uint64_t seed = 1;
+  ReadFlags read;
+};
+
 struct SpectrumFlags {
   std::string input;
   bool json = false;
@@ -120,6 +128,7 @@ struct GenerateRuns {
 };
 void add_generate_options(CLI::App& app, GenerateFlags& flags, const GenerateRuns& runs);
 void add_rewire_options(CLI::App& app, RewireFlags& f, const Run& run);
+void add_convert_options(CLI::App& app, ConvertFlags& f, const Run& run);
 void add_spectrum_options(CLI::App& app, SpectrumFlags& f, const Run& run);
 void add_theory_options(CLI::App& app, TheoryFlags& f, const Run& run);
 void add_simulate_options(CLI::App& app, SimulateFlags& f, const Run& run);

@@ -8,6 +8,7 @@ namespace hmfnet::cli {
 
 void add_generate_command(CLI::App& app);
 void add_rewire_command(CLI::App& app);
+void add_convert_command(CLI::App& app);
 void add_spectrum_command(CLI::App& app);
 void add_theory_command(CLI::App& app);
 void add_demo_command(CLI::App& app);

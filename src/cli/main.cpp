@@ -36,6 +36,7 @@ int run(int argc, char** argv) {
   hmfnet::cli::configure_app(app);
   hmfnet::cli::add_generate_command(app);
   hmfnet::cli::add_rewire_command(app);
+  hmfnet::cli::add_convert_command(app);
   hmfnet::cli::add_spectrum_command(app);
   hmfnet::cli::add_theory_command(app);
   hmfnet::cli::add_simulate_command(app);

@@ -42,4 +42,10 @@ DistributedInput ReadFlags::read_distributed(const std::string& path) const {
   return r;
 }
 
+DistributedRows ReadFlags::read_distributed_rows(const std::string& path) const {
+  DistributedRows r = hmfnet::read_distributed_rows(path, options());
+  print_warnings(r.warnings);
+  return r;
+}
+
 }  // namespace hmfnet::cli

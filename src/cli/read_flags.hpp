@@ -23,6 +23,8 @@ struct ReadFlags {
   /// This rank's rows only where the format allows it (parallel/distributed_read.hpp).
   /// Collective.
   DistributedInput read_distributed(const std::string& path) const;
+  /// The same rows before a DistributedNetwork takes them (`convert`). Collective.
+  DistributedRows read_distributed_rows(const std::string& path) const;
 
  private:
   ReadOptions options() const;

@@ -16,13 +16,6 @@ namespace hmfnet {
 
 namespace {
 
-enum class Field { pattern, integer, real };
-
-struct Header {
-  Field field = Field::pattern;
-  EntrySymmetry symmetry = EntrySymmetry::symmetric;
-};
-
 std::string lower(std::string_view s) {
   std::string out(s);
   std::transform(out.begin(), out.end(), out.begin(),
@@ -30,7 +23,7 @@ std::string lower(std::string_view s) {
   return out;
 }
 
-Header parse_header(TextScanner& in) {
+void parse_banner(TextScanner& in, MatrixMarketHeader& h) {
   std::string_view line;
   if (!in.next_line(line)) in.fail("empty file: no %%MatrixMarket header");
   std::vector<std::string_view> t;
@@ -42,14 +35,13 @@ Header parse_header(TextScanner& in) {
   if (lower(t[2]) != "coordinate") {
     in.fail("format '" + std::string(t[2]) + "' is not supported (only 'coordinate')");
   }
-  Header h;
   const std::string field = lower(t[3]);
   if (field == "pattern") {
-    h.field = Field::pattern;
+    h.field = MatrixMarketField::pattern;
   } else if (field == "integer") {
-    h.field = Field::integer;
+    h.field = MatrixMarketField::integer;
   } else if (field == "real") {
-    h.field = Field::real;
+    h.field = MatrixMarketField::real;
   } else {
     in.fail("field '" + std::string(t[3]) + "' is not supported (pattern, integer, real)");
   }
@@ -61,10 +53,9 @@ Header parse_header(TextScanner& in) {
   } else {
     in.fail("symmetry '" + std::string(t[4]) + "' is not supported (symmetric, general)");
   }
-  return h;
 }
 
-// Skips comments and blank lines; returns false at end of file.
+// Skips comments and blank lines; returns false at end of the text read.
 bool next_data_line(TextScanner& in, std::string_view& line, std::vector<std::string_view>& t) {
   while (in.next_line(line)) {
     if (!line.empty() && line.front() == '%') continue;
@@ -86,55 +77,80 @@ NodeIndex parse_index(const TextScanner& in, std::string_view token, std::int64_
 
 }  // namespace
 
-ReadResult read_matrix_market(const std::string& path, const ReadOptions& options) {
-  TextScanner in(path);
-  const Header header = parse_header(in);
+std::optional<MatrixMarketHeader> read_matrix_market_header(TextScanner& in) {
+  MatrixMarketHeader h;
+  parse_banner(in, h);
   std::string_view line;
   std::vector<std::string_view> t;
-  if (!next_data_line(in, line, t)) in.fail("truncated: no size line 'ROWS COLS ENTRIES'");
+  if (!next_data_line(in, line, t)) {
+    if (in.truncated()) return std::nullopt;
+    in.fail("truncated: no size line 'ROWS COLS ENTRIES'");
+  }
   if (t.size() != 3) in.fail("size line must be 'ROWS COLS ENTRIES'");
-  const std::int64_t size_line = in.line_number();
-  const std::int64_t rows = in.parse_integer(t[0], "row count");
+  h.size_line = in.line_number();
+  h.rows = in.parse_integer(t[0], "row count");
   const std::int64_t cols = in.parse_integer(t[1], "column count");
-  const std::int64_t declared = in.parse_integer(t[2], "entry count");
-  if (rows != cols) {
-    in.fail("matrix is " + std::to_string(rows) + " x " + std::to_string(cols) +
+  h.declared = in.parse_integer(t[2], "entry count");
+  if (h.rows != cols) {
+    in.fail("matrix is " + std::to_string(h.rows) + " x " + std::to_string(cols) +
             ": an adjacency matrix must be square");
   }
-  if (rows < 0 || rows > std::numeric_limits<NodeIndex>::max() || declared < 0) {
+  if (h.rows < 0 || h.rows > std::numeric_limits<NodeIndex>::max() || h.declared < 0) {
     in.fail("size line out of range");
   }
-  const std::size_t fields = header.field == Field::pattern ? 2 : 3;
-  std::vector<MatrixEntry> entries;
-  entries.reserve(static_cast<std::size_t>(std::min<std::int64_t>(declared, 1 << 20)));
+  return h;
+}
+
+void read_matrix_market_entries(TextScanner& in, const MatrixMarketHeader& header,
+                                std::vector<MatrixEntry>& entries, std::int64_t limit,
+                                EntryLimit at_limit) {
+  const std::size_t fields = header.field == MatrixMarketField::pattern ? 2 : 3;
+  std::string_view line;
+  std::vector<std::string_view> t;
   while (next_data_line(in, line, t)) {
-    if (static_cast<std::int64_t>(entries.size()) == declared) {
-      in.fail("more entries than the " + std::to_string(declared) + " declared on the size line");
+    if (static_cast<std::int64_t>(entries.size()) == limit) {
+      if (at_limit == EntryLimit::stop) return;
+      in.fail("more entries than the " + std::to_string(header.declared) +
+              " declared on the size line");
     }
     if (t.size() != fields) {
       in.fail("expected " + std::to_string(fields) + " fields, found " + std::to_string(t.size()));
     }
-    MatrixEntry e{parse_index(in, t[0], rows, "row index"),
-                  parse_index(in, t[1], rows, "column index"), 1.0, in.line_number()};
-    if (header.field == Field::integer) {
+    MatrixEntry e{parse_index(in, t[0], header.rows, "row index"),
+                  parse_index(in, t[1], header.rows, "column index"), 1.0, in.line_number()};
+    if (header.field == MatrixMarketField::integer) {
       e.weight = static_cast<double>(in.parse_integer(t[2], "weight"));
-    } else if (header.field == Field::real) {
+    } else if (header.field == MatrixMarketField::real) {
       e.weight = in.parse_real(t[2], "weight");
     }
     entries.push_back(e);
   }
-  if (static_cast<std::int64_t>(entries.size()) < declared) {
-    in.fail("truncated: " + std::to_string(declared) + " entries declared, " +
-            std::to_string(entries.size()) + " found");
+}
+
+void check_matrix_market_count(const std::string& path, const MatrixMarketHeader& header,
+                               std::int64_t found, std::int64_t last_line) {
+  if (found < header.declared) {
+    throw InputError(path, last_line,
+                     "truncated: " + std::to_string(header.declared) + " entries declared, " +
+                         std::to_string(found) + " found");
   }
-  const auto stored = static_cast<std::int64_t>(entries.size());
-  if (stored > 0 && rows > max_nodes_for_entries(stored)) {
-    throw InputError(path, size_line,
-                     std::to_string(rows) + " nodes for " + std::to_string(stored) +
-                         " entries: at most " + std::to_string(max_nodes_for_entries(stored)) +
+  if (found > 0 && header.rows > max_nodes_for_entries(found)) {
+    throw InputError(path, header.size_line,
+                     std::to_string(header.rows) + " nodes for " + std::to_string(found) +
+                         " entries: at most " + std::to_string(max_nodes_for_entries(found)) +
                          " (mostly isolated nodes; see io/node_count_limit.hpp)");
   }
-  BuildResult built = build_network(path, static_cast<NodeIndex>(rows), std::move(entries),
+}
+
+ReadResult read_matrix_market(const std::string& path, const ReadOptions& options) {
+  TextScanner in(path);
+  const MatrixMarketHeader header = *read_matrix_market_header(in);
+  std::vector<MatrixEntry> entries;
+  entries.reserve(static_cast<std::size_t>(std::min<std::int64_t>(header.declared, 1 << 20)));
+  read_matrix_market_entries(in, header, entries, header.declared);
+  check_matrix_market_count(path, header, static_cast<std::int64_t>(entries.size()),
+                            in.line_number());
+  BuildResult built = build_network(path, static_cast<NodeIndex>(header.rows), std::move(entries),
                                     {header.symmetry, options.asymmetry, 1});
   return {std::move(built.network), std::move(built.warnings)};
 }

@@ -227,6 +227,14 @@ void create_network_hdf5(const std::string& path, const NetworkTotals& totals,
   file.flush();
 }
 
+void write_original_index(const std::string& path, const std::vector<NodeIndex>& original_index) {
+  const Hdf5File file(path, Hdf5File::Mode::update);
+  const H5Id group = file.open_group("network");
+  file.write(group.get(), "original_index",
+             std::vector<std::int32_t>(original_index.begin(), original_index.end()));
+  file.flush();
+}
+
 void write_network_hdf5_rows(const std::string& path, const RowBlock& block,
                              EdgeOffset entries_before) {
   const Hdf5File file(path, Hdf5File::Mode::update);

@@ -60,5 +60,8 @@ void create_network_hdf5(const std::string& path, const NetworkTotals& totals,
                          const std::string& provenance = "{}");
 void write_network_hdf5_rows(const std::string& path, const RowBlock& block,
                              EdgeOffset entries_before);
+/// Adds /network/original_index (int32[n]) to such a file: node i was node original_index[i]
+/// of the network it was renumbered from (`hmfnet convert --partition`). Readers ignore it.
+void write_original_index(const std::string& path, const std::vector<NodeIndex>& original_index);
 
 }  // namespace hmfnet

@@ -1,5 +1,6 @@
 #include "io/text_scanner.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <fstream>
 #include <sstream>
@@ -15,6 +16,55 @@ TextScanner::TextScanner(std::string path) : m_path(std::move(path)) {
   buffer << in.rdbuf();
   if (in.bad()) throw InputError(m_path, 0, "read error");
   m_text = std::move(buffer).str();
+}
+
+TextScanner::TextScanner(std::string path, std::int64_t begin, std::int64_t end)
+    : m_path(std::move(path)), m_begin(begin) {
+  const std::int64_t size = file_size(m_path);
+  end = std::min(end, size);
+  m_truncated = end < size;
+  if (begin < 0 || begin > end) return;
+  std::ifstream in(m_path, std::ios::binary);
+  if (!in) throw InputError(m_path, 0, "cannot open file for reading");
+  m_text.resize(static_cast<std::size_t>(end - begin));
+  in.seekg(begin);
+  in.read(m_text.data(), static_cast<std::streamsize>(m_text.size()));
+  if (!in) throw InputError(m_path, 0, "read error at byte " + std::to_string(begin));
+  // A prefix keeps whole lines only (a range cut at line starts already ends with one).
+  if (m_truncated) m_text.resize(m_text.rfind('\n') + 1);
+}
+
+std::int64_t TextScanner::file_size(const std::string& path) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) throw InputError(path, 0, "cannot open file for reading");
+  const auto size = static_cast<std::int64_t>(in.tellg());
+  if (size < 0) throw InputError(path, 0, "not a regular file (its size is unknown)");
+  return size;
+}
+
+std::int64_t TextScanner::line_start_at_or_after(const std::string& path, std::int64_t offset) {
+  if (offset <= 0) return 0;
+  const std::int64_t size = file_size(path);
+  if (offset >= size) return size;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, "cannot open file for reading");
+  // The byte before `offset` says whether a line starts there; otherwise the next '\n' does.
+  in.seekg(offset - 1);
+  std::int64_t at = offset - 1;
+  for (char c = 0; in.get(c); ++at) {
+    if (c == '\n') return at + 1;
+  }
+  return at;
+}
+
+std::int64_t TextScanner::count_lines() const {
+  const auto newlines = std::count(m_text.begin(), m_text.end(), '\n');
+  return newlines + (!m_text.empty() && m_text.back() != '\n' ? 1 : 0);
+}
+
+void TextScanner::rewind(std::int64_t offset, std::int64_t line) {
+  m_pos = static_cast<std::size_t>(offset - m_begin);
+  m_line = line;
 }
 
 bool TextScanner::next_line(std::string_view& line) {

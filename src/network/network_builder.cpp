@@ -88,37 +88,31 @@ std::vector<MatrixEntry> expand_symmetric(const std::string& source,
   return entries;
 }
 
-// General input: the transpose of every entry must be present with the same weight; otherwise
-// reject, or form (A + A^T)/2 and say how many entries were unmatched.
+// General input: the transpose of every entry must be present with the same weight. Counts
+// the entries of rows [first, last) that have none. When the policy allows it, forms
+// (A + A^T)/2 whatever the count: exact where the transpose matches (w/2 + w/2 = w for normal
+// w), and right for a part of the rows whose own entries all match while an entry of another
+// part, in one of these columns, has no transpose here.
 std::vector<MatrixEntry> resolve_general(const std::string& source,
                                          std::vector<MatrixEntry> entries,
-                                         const BuildOptions& options,
-                                         std::vector<std::string>& warnings) {
+                                         const BuildOptions& options, NodeIndex first,
+                                         NodeIndex last, RowsBuild& build) {
   std::sort(entries.begin(), entries.end(), by_position);
   reject_duplicates(source, entries, options.index_base, "entry");
-  std::int64_t unmatched = 0;
-  const MatrixEntry* first_unmatched = nullptr;
   for (const auto& e : entries) {
-    if (e.row == e.col) continue;
+    if (e.row == e.col || e.row < first || e.row >= last) continue;
     const MatrixEntry key{e.col, e.row, 0.0, 0};
     const auto it = std::lower_bound(entries.begin(), entries.end(), key, by_position);
     const bool matched =
         it != entries.end() && it->row == e.col && it->col == e.row && it->weight == e.weight;
     if (!matched) {
-      ++unmatched;
-      if (first_unmatched == nullptr) first_unmatched = &e;
+      if (build.unmatched++ == 0) {
+        build.first_unmatched_line = e.line;
+        build.first_unmatched = pair_name(e, options.index_base);
+      }
     }
   }
-  if (unmatched == 0) return entries;
-  if (options.asymmetry == AsymmetryPolicy::reject) {
-    throw InputError(source, first_unmatched->line,
-                     "matrix is not symmetric: entry " +
-                         pair_name(*first_unmatched, options.index_base) +
-                         " has no transpose of equal weight (" + std::to_string(unmatched) +
-                         " such entries); use --symmetrize to take (A+A^T)/2");
-  }
-  warnings.push_back(source + ": warning: matrix is not symmetric (" + std::to_string(unmatched) +
-                     " entries without an equal transpose); using (A+A^T)/2");
+  if (options.asymmetry == AsymmetryPolicy::reject) return entries;
   std::vector<MatrixEntry> both;
   both.reserve(2 * entries.size());
   for (const auto& e : entries) {
@@ -141,45 +135,90 @@ std::vector<MatrixEntry> resolve_general(const std::string& source,
   return merged;
 }
 
-Network assemble(NodeIndex n, std::vector<MatrixEntry>& entries) {
+// The rows [first, last) of the entries as a block, sized exactly; weights only when some
+// differ from 1 (all_ones says which).
+void assemble(NodeIndex n, NodeIndex first, NodeIndex last, std::vector<MatrixEntry>& entries,
+              RowsBuild& build) {
   std::sort(entries.begin(), entries.end(), by_position);
-  const bool all_ones = std::all_of(entries.begin(), entries.end(),
-                                    [](const MatrixEntry& e) { return e.weight == 1.0; });
-  std::vector<EdgeOffset> row_ptr(static_cast<std::size_t>(n) + 1, 0);
-  std::vector<NodeIndex> cols(entries.size());
-  std::vector<double> weights(all_ones ? 0 : entries.size());
-  for (std::size_t k = 0; k < entries.size(); ++k) {
-    ++row_ptr[static_cast<std::size_t>(entries[k].row) + 1];
-    cols[k] = entries[k].col;
-    if (!all_ones) weights[k] = entries[k].weight;
+  const auto begin =
+      std::lower_bound(entries.begin(), entries.end(), MatrixEntry{first, 0, 0, 0}, by_position);
+  const auto end =
+      std::lower_bound(entries.begin(), entries.end(), MatrixEntry{last, 0, 0, 0}, by_position);
+  build.all_ones = std::all_of(begin, end, [](const MatrixEntry& e) { return e.weight == 1.0; });
+  RowBlock& block = build.block;
+  block.n = n;
+  block.first_row = first;
+  block.row_ptr.assign(static_cast<std::size_t>(last - first) + 1, 0);
+  block.cols.assign(static_cast<std::size_t>(end - begin), 0);
+  block.weights.assign(build.all_ones ? 0 : block.cols.size(), 0.0);
+  std::size_t k = 0;
+  for (auto e = begin; e != end; ++e, ++k) {
+    ++block.row_ptr[static_cast<std::size_t>(e->row - first) + 1];
+    block.cols[k] = e->col;
+    if (!build.all_ones) block.weights[k] = e->weight;
   }
-  for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i) row_ptr[i + 1] += row_ptr[i];
-  return Network::from_csr(n, std::move(row_ptr), std::move(cols), std::move(weights));
+  for (std::size_t r = 0; r + 1 < block.row_ptr.size(); ++r)
+    block.row_ptr[r + 1] += block.row_ptr[r];
 }
 
 }  // namespace
 
-BuildResult build_network(const std::string& source, NodeIndex n, std::vector<MatrixEntry> entries,
-                          const BuildOptions& options) {
-  BuildResult result;
+std::string asymmetry_message(const RowsBuild& first_part, std::int64_t unmatched) {
+  return "matrix is not symmetric: entry " + first_part.first_unmatched +
+         " has no transpose of equal weight (" + std::to_string(unmatched) +
+         " such entries); use --symmetrize to take (A+A^T)/2";
+}
+
+std::string asymmetry_warning(const std::string& source, std::int64_t unmatched) {
+  return source + ": warning: matrix is not symmetric (" + std::to_string(unmatched) +
+         " entries without an equal transpose); using (A+A^T)/2";
+}
+
+std::string zeros_warning(const std::string& source, std::int64_t zeros) {
+  return source + ": warning: " + std::to_string(zeros) +
+         " explicit zero entries dropped (a zero weight is no edge)";
+}
+
+RowsBuild build_rows(const std::string& source, NodeIndex n, NodeIndex first, NodeIndex last,
+                     std::vector<MatrixEntry> entries, const BuildOptions& options) {
+  RowsBuild build;
   check_weights(source, entries);
-  const auto zeros = std::count_if(entries.begin(), entries.end(),
-                                   [](const MatrixEntry& e) { return e.weight == 0.0; });
-  if (zeros > 0) {
+  const auto is_zero = [](const MatrixEntry& e) { return e.weight == 0.0; };
+  if (std::any_of(entries.begin(), entries.end(), is_zero)) {
     reject_duplicates_among_all(source, entries, options);
-    entries.erase(std::remove_if(entries.begin(), entries.end(),
-                                 [](const MatrixEntry& e) { return e.weight == 0.0; }),
-                  entries.end());
-    result.warnings.push_back(source + ": warning: " + std::to_string(zeros) +
-                              " explicit zero entries dropped (a zero weight is no edge)");
-  }
-  if (n <= 0 || entries.empty()) {
-    throw InputError(source, 0, "empty network: " + std::to_string(n) + " nodes and no edges");
+    build.zeros = std::count_if(entries.begin(), entries.end(), [&](const MatrixEntry& e) {
+      return is_zero(e) && e.row >= first && e.row < last;
+    });
+    entries.erase(std::remove_if(entries.begin(), entries.end(), is_zero), entries.end());
   }
   entries = options.symmetry == EntrySymmetry::symmetric
                 ? expand_symmetric(source, std::move(entries), options.index_base)
-                : resolve_general(source, std::move(entries), options, result.warnings);
-  result.network = assemble(n, entries);
+                : resolve_general(source, std::move(entries), options, first, last, build);
+  assemble(n, first, last, entries, build);
+  return build;
+}
+
+BuildResult build_network(const std::string& source, NodeIndex n, std::vector<MatrixEntry> entries,
+                          const BuildOptions& options) {
+  BuildResult result;
+  const bool empty = std::all_of(entries.begin(), entries.end(),
+                                 [](const MatrixEntry& e) { return e.weight == 0.0; });
+  RowsBuild build = build_rows(source, std::max<NodeIndex>(n, 0), 0, std::max<NodeIndex>(n, 0),
+                               std::move(entries), options);
+  if (build.zeros > 0) result.warnings.push_back(zeros_warning(source, build.zeros));
+  if (n <= 0 || empty) {
+    throw InputError(source, 0, "empty network: " + std::to_string(n) + " nodes and no edges");
+  }
+  if (build.unmatched > 0) {
+    if (options.asymmetry == AsymmetryPolicy::reject) {
+      throw InputError(source, build.first_unmatched_line,
+                       asymmetry_message(build, build.unmatched));
+    }
+    result.warnings.push_back(asymmetry_warning(source, build.unmatched));
+  }
+  RowBlock& b = build.block;
+  result.network =
+      Network::from_csr(n, std::move(b.row_ptr), std::move(b.cols), std::move(b.weights));
   return result;
 }
 

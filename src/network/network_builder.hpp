@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "network/network.hpp"
+#include "network/row_block.hpp"
 
 namespace hmfnet {
 
@@ -39,9 +40,34 @@ struct BuildOptions {
   int index_base = 0;  ///< only to print indices as the file wrote them
 };
 
-/// Checks and assembles. Entries with weight exactly 0 are dropped (with a warning): they are not
-/// edges. Weights must be finite and >= 0 (readers check as they parse, this checks again).
-/// A network whose stored weights are all 1 is stored as a 0/1 network (no values).
+/// The rows [first, last) of the network that `entries` describe, checked, and what the caller
+/// must add up over the parts of a network built in parts before it warns or refuses. `entries`
+/// must hold every entry, as written, that touches these rows (row or column in [first, last)):
+/// the whole file, or what a parallel reader sent to the rank owning the rows.
+struct RowsBuild {
+  RowBlock block;              ///< weights always kept; drop them when all_ones holds everywhere
+  bool all_ones = true;        ///< every stored weight in these rows is 1
+  std::int64_t zeros = 0;      ///< explicit zeros written in these rows (dropped)
+  std::int64_t unmatched = 0;  ///< `general`: entries of these rows without an equal transpose
+  std::int64_t first_unmatched_line = 0;
+  std::string first_unmatched;  ///< that entry, "(i,j)" as the file writes indices
+};
+
+/// Throws InputError for what is wrong within the entries (weights, duplicates); an asymmetric
+/// `general` matrix is only counted (RowsBuild::unmatched) and, when the policy says so,
+/// symmetrised (always: exact where it is symmetric). Emptiness is the caller's to check.
+RowsBuild build_rows(const std::string& source, NodeIndex n, NodeIndex first, NodeIndex last,
+                     std::vector<MatrixEntry> entries, const BuildOptions& options);
+
+/// The messages of the checks that need the whole network's counts.
+std::string asymmetry_message(const RowsBuild& first_part, std::int64_t unmatched);
+std::string asymmetry_warning(const std::string& source, std::int64_t unmatched);
+std::string zeros_warning(const std::string& source, std::int64_t zeros);
+
+/// Checks and assembles (build_rows over all rows). Entries with weight exactly 0 are dropped (with
+/// a warning): they are not edges. Weights must be finite and >= 0 (readers check as they parse,
+/// this checks again). A network whose stored weights are all 1 is stored as a 0/1 network (no
+/// values).
 BuildResult build_network(const std::string& source, NodeIndex n, std::vector<MatrixEntry> entries,
                           const BuildOptions& options);
 

@@ -36,7 +36,8 @@ BlockCounts gather_counts(const RowBlock& block) {
 }  // namespace
 
 void write_distributed_network_hdf5(const std::string& path, const RowBlock& block,
-                                    const std::string& provenance) {
+                                    const std::string& provenance,
+                                    const std::vector<NodeIndex>& original_index) {
   const BlockCounts counts = gather_counts(block);
   const int me = ParallelSession::rank();
   NetworkTotals totals{block.n, 0, 0, false};
@@ -72,6 +73,7 @@ void write_distributed_network_hdf5(const std::string& path, const RowBlock& blo
     if (me != 0) return;
     out = std::make_unique<AtomicFile>(path);
     create_network_hdf5(out->temp_path(), totals, provenance);
+    if (!original_index.empty()) write_original_index(out->temp_path(), original_index);
     temp = out->temp_path();
   });
   ParallelSession::broadcast(temp, 0);

@@ -7,6 +7,7 @@
 #include "core/random.hpp"
 #include "io/network_file.hpp"
 #include "io/network_hdf5.hpp"
+#include "parallel/distributed_text_read.hpp"
 #include "parallel/parallel_session.hpp"
 
 namespace hmfnet {
@@ -23,8 +24,7 @@ std::uint64_t entry_hash(NodeIndex other, double weight) {
 }
 
 bool is_hdf5_with_rows(const std::string& path) {
-  return format_from_extension(path) == NetworkFormat::hdf5 &&
-         !read_implicit_network_hdf5(path).has_value();
+  return !read_implicit_network_hdf5(path).has_value();
 }
 
 }  // namespace
@@ -52,28 +52,37 @@ void require_symmetric(const RowBlock& block, const std::string& where) {
   });
 }
 
-DistributedInput read_distributed_input(const std::string& path, const ReadOptions& options) {
-  DistributedInput input;
+DistributedRows read_distributed_rows(const std::string& path, const ReadOptions& options) {
+  DistributedRows rows;
   bool by_blocks = false;
-  ParallelSession::agree([&] { by_blocks = is_hdf5_with_rows(path); });
+  bool text = false;
+  ParallelSession::agree([&] {
+    text = format_from_extension(path) != NetworkFormat::hdf5;
+    by_blocks = !text && is_hdf5_with_rows(path);
+  });
   if (by_blocks) {
-    RowBlock block;
     ParallelSession::agree([&] {
-      block = read_network_hdf5_rows(path, ParallelSession::rank(), ParallelSession::ranks());
+      rows.block = read_network_hdf5_rows(path, ParallelSession::rank(), ParallelSession::ranks());
     });
-    require_symmetric(block, path);
-    input.network = std::make_unique<DistributedNetwork>(std::move(block));
-    return input;
-  }
-  NetworkInput whole;
-  ParallelSession::agree([&] { whole = read_network_input(path, options); });
-  input.warnings = std::move(whole.warnings);
-  if (const auto* complete = whole.complete()) {
-    input.complete = *complete;
-    input.network = std::make_unique<DistributedNetwork>(*complete);
+    require_symmetric(rows.block, path);
+  } else if (text) {
+    TextRows read = read_text_rows(path, options);
+    rows.block = std::move(read.block);
+    rows.warnings = std::move(read.warnings);
   } else {
-    input.network = std::make_unique<DistributedNetwork>(whole.stored());
+    // An hmfnet HDF5 file without rows: the complete graph held implicitly.
+    ParallelSession::agree([&] { rows.complete = read_implicit_network_hdf5(path); });
   }
+  return rows;
+}
+
+DistributedInput read_distributed_input(const std::string& path, const ReadOptions& options) {
+  DistributedRows rows = read_distributed_rows(path, options);
+  DistributedInput input;
+  input.warnings = std::move(rows.warnings);
+  input.complete = rows.complete;
+  input.network = rows.complete ? std::make_unique<DistributedNetwork>(*rows.complete)
+                                : std::make_unique<DistributedNetwork>(std::move(rows.block));
   return input;
 }
 

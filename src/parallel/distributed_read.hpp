@@ -2,8 +2,9 @@
 // Reading a network file into row blocks over the ranks, so that no rank holds the whole matrix
 // where the format allows it: hmfnet HDF5 CSR files are read by hyperslabs (each rank its own
 // balanced block, io/network_hdf5.hpp); the complete graph stored implicitly needs no rows;
-// text formats (Matrix Market, edge lists) are still parsed whole on every rank and sliced
-// (convert them to hmfnet HDF5 once for large networks).
+// text formats (Matrix Market, edge lists) are parsed by byte ranges, each rank its own, and
+// their entries sent to the ranks owning them (parallel/distributed_text_read.hpp; `hmfnet
+// convert` does it once for a file read many times).
 #include <memory>
 #include <optional>
 #include <string>
@@ -14,6 +15,16 @@
 #include "parallel/distributed_network.hpp"
 
 namespace hmfnet {
+
+/// This rank's rows as read, before a DistributedNetwork takes them (what `convert` writes).
+struct DistributedRows {
+  RowBlock block;                         ///< no rows when `complete` is set
+  std::optional<CompleteGraph> complete;  ///< set when the file holds K_N implicitly
+  std::vector<std::string> warnings;      ///< the text readers' (ReadResult::warnings)
+};
+
+/// Collective; errors as read_distributed_input.
+DistributedRows read_distributed_rows(const std::string& path, const ReadOptions& options = {});
 
 struct DistributedInput {
   std::unique_ptr<DistributedNetwork> network;

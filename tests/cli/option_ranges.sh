@@ -29,6 +29,7 @@ declare -A base=(
   ["generate sbm"]="--half 30 --p-in 0.2 --p-out 0.05 --seed 1 --output $out/sbm.mtx"
   ["generate complete"]="--n 50 --output $out/k.h5"
   ["rewire"]="input $net --target-rho 1.1 --seed 1 --output $out/rewired.mtx"
+  ["convert"]="input $net --output $out/converted.h5"
   ["spectrum"]="input $net"
   ["theory"]="input $net --sigma0 0.35 --K-over-Kc 2"
   ["simulate"]="input $net --K 1 --seed 1 --T 10 --transient 1 --node-data --output $out/sim.h5"

@@ -113,6 +113,7 @@ inline bool parse_command_line(std::vector<std::string> args) {
   for (const auto& a : args) line += " " + a;
   cli::GenerateFlags generate;
   cli::RewireFlags rewire;
+  cli::ConvertFlags convert;
   cli::SpectrumFlags spectrum;
   cli::TheoryFlags theory;
   cli::SimulateFlags simulate;
@@ -130,6 +131,12 @@ inline bool parse_command_line(std::vector<std::string> args) {
     c.positive(rewire.target_rho, "--target-rho not > 0");
     c.require(rewire.max_attempts >= 0, "--max-attempts < 0");
     c.read_flags(rewire.read);
+    reached = true;
+  });
+  cli::add_convert_options(app, convert, [&] {
+    const RangeChecks c(line);
+    c.require(convert.partition >= 0 && convert.partition <= 65536, "--partition range");
+    c.read_flags(convert.read);
     reached = true;
   });
   cli::add_spectrum_options(app, spectrum, [&] {
@@ -165,15 +172,15 @@ inline bool parse_command_line(std::vector<std::string> args) {
 inline const std::vector<std::string>& argument_tokens() {
   static const std::vector<std::string> tokens = {
       // subcommands and positional files
-      "generate", "er", "sf", "rewire", "spectrum", "theory", "simulate", "demo", "net.mtx",
-      "out.h5", "out.mtx", "-o", "--output", "--help", "--version", "--",
+      "generate", "er", "sf", "rewire", "convert", "spectrum", "theory", "simulate", "demo",
+      "net.mtx", "out.h5", "out.mtx", "-o", "--output", "--help", "--version", "--",
       // options
       "--n", "--q", "--mean-degree", "--seed", "--alpha", "--dmin", "--cutoff", "--link",
       "--target-rho", "--max-attempts", "--json", "--sigma0", "--tolerance", "--K", "--K-over-Kc",
       "--K-sweep", "--omega", "--h", "--T", "--transient", "--replicas", "--threads",
       "--checkpoint", "--resume", "--quiet", "--node-data", "--rotor-node", "--phase-bins",
       "--restart-each-K", "--record-stride", "--energy-tolerance", "--integrator", "--force",
-      "--symmetrize", "--index-base", "--nodes",
+      "--symmetrize", "--index-base", "--nodes", "--partition",
       // values: inside, on and outside every stated range
       "nan", "-nan", "inf", "-inf", "-1", "0", "-0", "1e-300", "1e-16", "1e-15", "1e-14", "0.01",
       "0.02", "0.5", "1", "1.5", "2", "2.0000001", "2.5", "3", "10", "64", "65", "99", "100",

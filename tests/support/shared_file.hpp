@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <string>
 
@@ -16,10 +17,10 @@ namespace hmfnet::test {
 // concurrent run at another rank count; rank 0 writes it and removes it.
 class SharedFile {
  public:
-  explicit SharedFile(const std::string& stem)
+  explicit SharedFile(const std::string& stem, const std::string& extension = ".h5")
       : m_path((std::filesystem::temp_directory_path() /
                 (stem + "_" + std::to_string(::getppid()) + "_" +
-                 std::to_string(ParallelSession::ranks()) + ".h5"))
+                 std::to_string(ParallelSession::ranks()) + extension))
                    .string()) {}
   ~SharedFile() {
     ParallelSession::sum(0.0);  // every rank is done with it
@@ -36,6 +37,15 @@ class SharedFile {
         write_network_hdf5(m_path, net);
         corrupt();
       }
+    });
+  }
+  /// Rank 0 writes `text` as the file's bytes; the others wait for it.
+  void write_text(const std::string& text) const {
+    ParallelSession::agree([&] {
+      if (ParallelSession::rank() != 0) return;
+      std::ofstream out(m_path, std::ios::binary);
+      out << text;
+      if (!out.flush()) throw std::runtime_error("cannot write " + m_path);
     });
   }
 
