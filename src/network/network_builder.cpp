@@ -201,14 +201,16 @@ RowsBuild build_rows(const std::string& source, NodeIndex n, NodeIndex first, No
 BuildResult build_network(const std::string& source, NodeIndex n, std::vector<MatrixEntry> entries,
                           const BuildOptions& options) {
   BuildResult result;
-  const bool empty = std::all_of(entries.begin(), entries.end(),
-                                 [](const MatrixEntry& e) { return e.weight == 0.0; });
-  RowsBuild build = build_rows(source, std::max<NodeIndex>(n, 0), 0, std::max<NodeIndex>(n, 0),
-                               std::move(entries), options);
-  if (build.zeros > 0) result.warnings.push_back(zeros_warning(source, build.zeros));
-  if (n <= 0 || empty) {
+  // An empty network is refused before its n + 1 row pointers are allocated: with no entries the
+  // node count is not bounded by io/node_count_limit.hpp ("# nodes 1999999999" alone asked for
+  // 16 GB; found by tests/fuzz). Bad weights and repeated zeros are still named first.
+  if (n <= 0 || std::all_of(entries.begin(), entries.end(),
+                            [](const MatrixEntry& e) { return e.weight == 0.0; })) {
+    build_rows(source, 0, 0, 0, std::move(entries), options);
     throw InputError(source, 0, "empty network: " + std::to_string(n) + " nodes and no edges");
   }
+  RowsBuild build = build_rows(source, n, 0, n, std::move(entries), options);
+  if (build.zeros > 0) result.warnings.push_back(zeros_warning(source, build.zeros));
   if (build.unmatched > 0) {
     if (options.asymmetry == AsymmetryPolicy::reject) {
       throw InputError(source, build.first_unmatched_line,

@@ -110,4 +110,11 @@ std::vector<NodeIndex> balanced_row_starts(const std::vector<EdgeOffset>& row_pt
   return balanced_row_starts(n, parts, [&row_ptr](NodeIndex i) { return row_ptr[idx(i)]; });
 }
 
+std::vector<EdgeOffset> row_pointers_from_counts(const std::vector<std::uint64_t>& counts) {
+  std::vector<EdgeOffset> row_ptr(counts.size() + 1, 0);
+  for (std::size_t i = 0; i < counts.size(); ++i)
+    row_ptr[i + 1] = row_ptr[i] + static_cast<EdgeOffset>(counts[i]);
+  return row_ptr;
+}
+
 }  // namespace hmfnet

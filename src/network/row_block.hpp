@@ -9,6 +9,7 @@
 // never split, so a rank may hold more than nnz / parts by at most one row, and a later rank may
 // be left with no rows when one row holds more than its share: a star whose hub is the last
 // node, on 3 ranks, gives blocks of 666, 334 and 0 rows).
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -50,5 +51,9 @@ std::vector<NodeIndex> balanced_row_starts(
     NodeIndex n, int parts, const std::function<EdgeOffset(NodeIndex)>& entries_before);
 /// The same, from the global CSR row pointers (n + 1 entries).
 std::vector<NodeIndex> balanced_row_starts(const std::vector<EdgeOffset>& row_ptr, int parts);
+
+/// CSR row pointers (counts.size() + 1 entries, starting at 0) of rows holding counts[i] stored
+/// entries each: what the parallel builders cut rows from once the counts are summed over ranks.
+std::vector<EdgeOffset> row_pointers_from_counts(const std::vector<std::uint64_t>& counts);
 
 }  // namespace hmfnet

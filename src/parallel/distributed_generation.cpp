@@ -64,9 +64,7 @@ UnitShare count_degrees(const EdgeSource& source, std::vector<std::uint64_t>& de
 RowBlock allocate_block(const std::vector<std::uint64_t>& degree,
                         std::vector<NodeIndex>& row_starts) {
   const std::size_t n = degree.size();
-  std::vector<EdgeOffset> row_ptr(n + 1, 0);
-  for (std::size_t i = 0; i < n; ++i)
-    row_ptr[i + 1] = row_ptr[i] + static_cast<EdgeOffset>(degree[i]);
+  const std::vector<EdgeOffset> row_ptr = row_pointers_from_counts(degree);
   row_starts = balanced_row_starts(row_ptr, ParallelSession::ranks());
   RowBlock block;
   block.n = static_cast<NodeIndex>(n);

@@ -18,19 +18,12 @@ struct BlockCounts {
 };
 
 BlockCounts gather_counts(const RowBlock& block) {
-  const auto ranks = static_cast<std::size_t>(ParallelSession::ranks());
-  const auto me = static_cast<std::size_t>(ParallelSession::rank());
-  std::vector<std::uint64_t> all(4 * ranks, 0);
-  all[me] = static_cast<std::uint64_t>(block.rows());
-  all[ranks + me] = static_cast<std::uint64_t>(block.nnz());
-  all[2 * ranks + me] = static_cast<std::uint64_t>(block.self_loops());
-  all[3 * ranks + me] = block.weighted() ? 1 : 0;
-  ParallelSession::sum_in_place(all);
-  const auto part = [&](std::size_t k) {
-    return std::vector<std::uint64_t>(all.begin() + static_cast<std::ptrdiff_t>(k * ranks),
-                                      all.begin() + static_cast<std::ptrdiff_t>((k + 1) * ranks));
+  const auto gather = [](std::int64_t mine) {
+    const std::vector<std::int64_t> all = ParallelSession::all_gather(mine);
+    return std::vector<std::uint64_t>(all.begin(), all.end());
   };
-  return {part(0), part(1), part(2), part(3)};
+  return {gather(block.rows()), gather(block.nnz()), gather(block.self_loops()),
+          gather(block.weighted() ? 1 : 0)};
 }
 
 }  // namespace

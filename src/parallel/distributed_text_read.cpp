@@ -34,14 +34,6 @@ Header read_header(const std::string& path, ReadHeader read, BodyStart& body) {
   }
 }
 
-// Entries found on each rank, indexed by rank (the same vector on every rank).
-std::vector<std::int64_t> counts_by_rank(std::int64_t mine) {
-  std::vector<std::uint64_t> counts(at(ParallelSession::ranks()), 0);
-  counts[at(ParallelSession::rank())] = static_cast<std::uint64_t>(mine);
-  ParallelSession::sum_in_place(counts);
-  return {counts.begin(), counts.end()};
-}
-
 // This rank's share of the body: equal byte ranges moved to line starts. Not collective (it
 // may fail on one rank: run it inside agree).
 TextScanner read_own_range(const std::string& path, const BodyStart& body) {
@@ -59,10 +51,22 @@ TextScanner read_own_range(const std::string& path, const BodyStart& body) {
 
 // Collective: numbers the lines of every range on from those of the ranges before it.
 void number_lines(TextScanner& in, const BodyStart& body) {
-  const auto lines = counts_by_rank(in.count_lines());
+  const auto lines = ParallelSession::all_gather(in.count_lines());
   std::int64_t before = body.lines;
   for (int q = 0; q < ParallelSession::rank(); ++q) before += lines[at(q)];
   in.set_lines_before(before);
+}
+
+// The header (every rank reads it) and this rank's range of the body, its lines numbered.
+template <class Header, class ReadHeader>
+std::optional<TextScanner> read_header_and_range(const std::string& path, ReadHeader read,
+                                                 Header& header) {
+  BodyStart body;
+  std::optional<TextScanner> in;
+  ParallelSession::agree([&] { header = read_header<Header>(path, read, body); });
+  ParallelSession::agree([&] { in.emplace(read_own_range(path, body)); });
+  number_lines(*in, body);
+  return in;
 }
 
 // The parsed entries of this rank and what the whole file says.
@@ -74,19 +78,14 @@ struct Parsed {
 
 Parsed parse_matrix_market(const std::string& path, const ReadOptions& options) {
   Parsed parsed;
-  BodyStart body;
   MatrixMarketHeader header;
-  std::optional<TextScanner> in;
-  ParallelSession::agree(
-      [&] { header = read_header<MatrixMarketHeader>(path, read_matrix_market_header, body); });
-  ParallelSession::agree([&] { in.emplace(read_own_range(path, body)); });
-  number_lines(*in, body);
+  std::optional<TextScanner> in = read_header_and_range(path, read_matrix_market_header, header);
   // Each rank stops after declared + 1 entries (what a file with a wrong size line may hold
   // is bounded) and the check below names the first entry past the declared count.
   ParallelSession::agree([&] {
     read_matrix_market_entries(*in, header, parsed.entries, header.declared + 1, EntryLimit::stop);
   });
-  const auto counts = counts_by_rank(static_cast<std::int64_t>(parsed.entries.size()));
+  const auto counts = ParallelSession::all_gather(static_cast<std::int64_t>(parsed.entries.size()));
   ParallelSession::agree([&] {
     std::int64_t before = 0;
     for (int q = 0; q < ParallelSession::rank(); ++q) before += counts[at(q)];
@@ -109,13 +108,8 @@ Parsed parse_matrix_market(const std::string& path, const ReadOptions& options) 
 
 Parsed parse_edge_list(const std::string& path, const ReadOptions& options) {
   Parsed parsed;
-  BodyStart body;
   EdgeListHeader header;
-  std::optional<TextScanner> in;
-  ParallelSession::agree(
-      [&] { header = read_header<EdgeListHeader>(path, read_edge_list_header, body); });
-  ParallelSession::agree([&] { in.emplace(read_own_range(path, body)); });
-  number_lines(*in, body);
+  std::optional<TextScanner> in = read_header_and_range(path, read_edge_list_header, header);
   // Weights on every line or on none: the file's first edge line (in the header's view) sets the
   // field count for every rank.
   EdgeListScan scan{header.fields, -1};
@@ -123,7 +117,8 @@ Parsed parse_edge_list(const std::string& path, const ReadOptions& options) {
   const auto largest =
       static_cast<std::int64_t>(ParallelSession::max(static_cast<double>(scan.largest)));
   std::int64_t stored = 0;
-  for (const auto c : counts_by_rank(static_cast<std::int64_t>(parsed.entries.size()))) stored += c;
+  for (const auto c : ParallelSession::all_gather(static_cast<std::int64_t>(parsed.entries.size())))
+    stored += c;
   ParallelSession::agree(
       [&] { parsed.n = edge_list_node_count(path, options, header, largest, stored); });
   parsed.build = {EntrySymmetry::symmetric, AsymmetryPolicy::reject, options.edge_list_base};
@@ -142,10 +137,7 @@ std::vector<NodeIndex> row_starts_by_entries(const Parsed& parsed) {
     }
   });
   ParallelSession::sum_in_place(count);
-  std::vector<EdgeOffset> row_ptr(count.size() + 1, 0);
-  for (std::size_t i = 0; i < count.size(); ++i)
-    row_ptr[i + 1] = row_ptr[i] + static_cast<EdgeOffset>(count[i]);
-  return balanced_row_starts(row_ptr, ParallelSession::ranks());
+  return balanced_row_starts(row_pointers_from_counts(count), ParallelSession::ranks());
 }
 
 }  // namespace
@@ -155,6 +147,17 @@ TextRows read_text_rows(const std::string& path, const ReadOptions& options) {
   ParallelSession::agree([&] { format = format_from_extension(path); });
   Parsed parsed = format == NetworkFormat::matrix_market ? parse_matrix_market(path, options)
                                                          : parse_edge_list(path, options);
+  // Refused before anything O(N) is allocated: with no entries the node count is not bounded
+  // (io/node_count_limit.hpp), "# nodes 1999999999" alone would ask for 16 GB per rank.
+  const double nonzero = ParallelSession::sum(
+      static_cast<double>(std::count_if(parsed.entries.begin(), parsed.entries.end(),
+                                        [](const MatrixEntry& e) { return e.weight != 0.0; })));
+  ParallelSession::agree([&] {
+    if (parsed.n <= 0 || nonzero == 0.0) {
+      throw InputError(path, 0,
+                       "empty network: " + std::to_string(parsed.n) + " nodes and no edges");
+    }
+  });
   const std::vector<NodeIndex> row_starts = row_starts_by_entries(parsed);
   const NodeIndex first = row_starts[at(ParallelSession::rank())];
   const NodeIndex last = row_starts[at(ParallelSession::rank()) + 1];

@@ -49,9 +49,7 @@ RowBlock renumber_rows(const RowBlock& block, const std::vector<NodeIndex>& new_
         static_cast<std::uint64_t>(block.row_ptr[at(r) + 1] - block.row_ptr[at(r)]);
   }
   ParallelSession::sum_in_place(degree);
-  std::vector<EdgeOffset> row_ptr(degree.size() + 1, 0);
-  for (std::size_t i = 0; i < degree.size(); ++i)
-    row_ptr[i + 1] = row_ptr[i] + static_cast<EdgeOffset>(degree[i]);
+  const std::vector<EdgeOffset> row_ptr = row_pointers_from_counts(degree);
   degree = {};
   const std::vector<NodeIndex> starts = balanced_row_starts(row_ptr, ParallelSession::ranks());
   const bool weighted = ParallelSession::max(block.weighted() ? 1.0 : 0.0) > 0.0;

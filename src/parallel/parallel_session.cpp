@@ -60,6 +60,16 @@ double ParallelSession::max(double local) {
   return global;
 }
 
+std::vector<std::int64_t> ParallelSession::all_gather(std::int64_t mine) {
+  // One non-zero slot per rank: the sum modulo 2^64 is each rank's value, negative ones too.
+  std::vector<std::uint64_t> slots(static_cast<std::size_t>(ranks()), 0);
+  slots[static_cast<std::size_t>(rank())] = static_cast<std::uint64_t>(mine);
+  sum_in_place(slots);
+  std::vector<std::int64_t> values(slots.size());
+  for (std::size_t p = 0; p < slots.size(); ++p) values[p] = static_cast<std::int64_t>(slots[p]);
+  return values;
+}
+
 void ParallelSession::sum_in_place(std::vector<double>& values) {
   if (values.empty() || ranks() == 1) return;
   std::vector<double> global(values.size());

@@ -42,6 +42,9 @@ class ParallelSession {
   /// Element-wise sum modulo 2^64 (hash signatures), in place.
   static void sum_in_place(std::vector<std::uint64_t>& values);
 
+  /// Each rank's value, indexed by rank, on every rank. Collective.
+  static std::vector<std::int64_t> all_gather(std::int64_t mine);
+
   /// Point to point and from one rank to all (length travels first). Blocking.
   static void send(const std::vector<std::int64_t>& values, int destination);
   static std::vector<std::int64_t> receive(int source);

@@ -212,6 +212,12 @@ TEST_CASE("Edge-list reader rejects an empty network [no edges]", "[io][edge_lis
     const auto e = read_error(dir, "e.txt", "", options);
     require_input_error(e, dir.file("e.txt"), 0, "empty network: 4 nodes and no edges");
   }
+  SECTION("'# nodes 1999999999' and nothing else: refused before 16 GB of row pointers") {
+    // Found by tests/fuzz (crashes/edge_list/oom-a20d...): with no entries the node count is not
+    // bounded, so emptiness must be decided before the rows are allocated.
+    const auto e = read_error(dir, "e.txt", "# nodes 1999999999\n");
+    require_input_error(e, dir.file("e.txt"), 0, "empty network: 1999999999 nodes and no edges");
+  }
 }
 
 TEST_CASE("Edge-list reader refuses an index base other than 0 or 1 [base 2]", "[io][edge_list]") {

@@ -230,6 +230,10 @@ TEST_CASE("Matrix Market reader rejects an empty network [no entries]", "[io][ma
     const auto e = read_error(dir, "e.mtx", k_real_symmetric + "2 2 1\n2 1 0\n");
     require_input_error(e, dir.file("e.mtx"), 0, "empty network");
   }
+  SECTION("2 10^9 nodes and no entries: refused before their row pointers are allocated") {
+    const auto e = read_error(dir, "e.mtx", k_pattern_symmetric + "2000000000 2000000000 0\n");
+    require_input_error(e, dir.file("e.mtx"), 0, "empty network: 2000000000 nodes");
+  }
 }
 
 TEST_CASE("Matrix Market reader rejects a bad header [header]", "[io][matrix_market]") {

@@ -273,6 +273,11 @@ TEST_CASE("A bad entry ends every rank with the serial reader's FILE:LINE messag
     file.write_text(matrix_market(net, Lines::both, body, 1));
     check_same_error(file);
   }
+  SECTION("'# nodes 1999999999' and no edges: empty, refused before any O(N) allocation") {
+    const SharedFile file("hmfnet_text_huge_empty", ".txt");
+    file.write_text("# nodes 1999999999\n");
+    check_same_error(file);
+  }
   SECTION("Only zero weights: an empty network") {
     const SharedFile file("hmfnet_text_empty", ".txt");
     file.write_text("0 1 0\n2 3 0\n");
