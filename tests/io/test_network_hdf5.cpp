@@ -11,6 +11,7 @@
 #include "network/erdos_renyi.hpp"
 #include "support/hdf5_corruption.hpp"
 #include "support/io_helpers.hpp"
+#include "support/weighted_networks.hpp"
 
 using namespace hmfnet;
 using Catch::Matchers::Contains;
@@ -18,6 +19,7 @@ using hmfnet::test::input_error_from;
 using hmfnet::test::overwrite_dataset;
 using hmfnet::test::require_input_error;
 using hmfnet::test::TempDirectory;
+using hmfnet::test::weighted_er;
 
 namespace {
 
@@ -442,20 +444,6 @@ TEST_CASE("HDF5 network reader refuses an unknown implicit structure and format 
   require_input_error(input_error_from([&] { read_implicit_network_hdf5(path); }), path, 0,
                       "network format version 3 is not supported (1 or 2)");
 }
-
-namespace {
-
-// ER with symmetric weights w_ij = 1 + (i + j) mod 5, so a block that mixes up weights shows.
-Network weighted_er(NodeIndex n, double p, std::uint64_t seed) {
-  const Network net = erdos_renyi({n, p, seed});
-  std::vector<double> w;
-  for (NodeIndex i = 0; i < net.size(); ++i) {
-    for (const auto [j, unused] : net.row(i)) w.push_back(1.0 + double((i + j) % 5));
-  }
-  return Network::from_csr(net.size(), net.row_ptr(), net.cols(), w);
-}
-
-}  // namespace
 
 TEST_CASE("HDF5 row blocks read by hyperslabs are the rows of the whole network [ER, 1-5 parts]",
           "[io][hdf5][row_block]") {

@@ -14,25 +14,15 @@
 #include "parallel/distributed_text_read.hpp"
 #include "parallel/parallel_session.hpp"
 #include "support/shared_file.hpp"
+#include "support/weighted_networks.hpp"
 
 using namespace hmfnet;
 using Catch::Matchers::Contains;
 using hmfnet::test::collective_message;
 using hmfnet::test::SharedFile;
+using hmfnet::test::weighted_er;
 
 namespace {
-
-// ER with weights that differ from edge to edge (a symmetric function of the two ends).
-Network weighted_er(NodeIndex n, double q, std::uint64_t seed) {
-  const Network net = erdos_renyi({n, q, seed});
-  std::vector<double> weights;
-  for (NodeIndex i = 0; i < n; ++i) {
-    for (const auto [j, w] : net.row(i)) {
-      weights.push_back(w * (1.0 + 0.5 * std::sin(0.37 * (std::min(i, j) + 3.0 * std::max(i, j)))));
-    }
-  }
-  return Network::from_csr(n, net.row_ptr(), net.cols(), std::move(weights));
-}
 
 enum class Lines { upper, both };
 

@@ -15,8 +15,10 @@
 #include "parallel/graph_partition.hpp"
 #include "parallel/node_renumbering.hpp"
 #include "parallel/parallel_session.hpp"
+#include "support/weighted_networks.hpp"
 
 using namespace hmfnet;
+using hmfnet::test::weighted_er;
 
 namespace {
 
@@ -32,17 +34,6 @@ Network permuted(const Network& net, const std::vector<NodeIndex>& new_index) {
   return build_network("permuted", net.size(), std::move(entries),
                        {EntrySymmetry::general, AsymmetryPolicy::reject, 0})
       .network;
-}
-
-// ER whose weights differ from edge to edge (a symmetric function of the two ends).
-Network weighted_er(NodeIndex n, double q, std::uint64_t seed) {
-  const Network net = erdos_renyi({n, q, seed});
-  std::vector<double> weights;
-  for (NodeIndex i = 0; i < n; ++i) {
-    for (const auto [j, w] : net.row(i))
-      weights.push_back(w * (1.0 + 0.5 * std::sin(0.37 * (std::min(i, j) + 3.0 * std::max(i, j)))));
-  }
-  return Network::from_csr(n, net.row_ptr(), net.cols(), std::move(weights));
 }
 
 std::vector<NodeIndex> shuffled_labels(NodeIndex n, std::uint64_t seed) {
