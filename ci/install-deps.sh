@@ -15,6 +15,8 @@ packages=(
   libptscotch-dev  # Zoltan2's headers call PT-Scotch: linked though we use PHG (graph_partition.cpp)
   libcli11-dev nlohmann-json3-dev libbenchmark-dev
   python3 python3-numpy python3-h5py python3-matplotlib
+  python3-dev pybind11-dev python3-pybind11 python3-pytest python3-scipy python3-networkx  # python/hmfnet
+  dpkg-dev  # cpack -G DEB: dpkg-shlibdeps (tests/install/debian_package.sh)
   clang libclang-rt-dev libomp-dev  # ci/fuzz.sh: libFuzzer and sanitizer runtimes, OpenMP for clang
   clang-format clang-tidy  # ci/format.sh, ci/tidy.sh
 )

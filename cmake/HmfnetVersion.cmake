@@ -21,6 +21,7 @@ add_custom_target(hmfnet_version ALL
   VERBATIM)
 add_library(hmfnet_version_info SHARED ${HMFNET_VERSION_SOURCE})
 add_dependencies(hmfnet_version_info hmfnet_version)
-target_include_directories(hmfnet_version_info PUBLIC ${CMAKE_SOURCE_DIR}/src)
+target_include_directories(hmfnet_version_info PUBLIC $<BUILD_INTERFACE:${CMAKE_SOURCE_DIR}/src>
+  $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/hmfnet>)
 set_target_properties(hmfnet_version_info PROPERTIES LIBRARY_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/lib)
 set(CMAKE_LINK_DEPENDS_NO_SHARED ON)

@@ -128,8 +128,15 @@ void add_convert_options(CLI::App& app, ConvertFlags& f, const Run& run) {
        "hypergraph partitioning, parts of equal stored entries) is contiguous: P row blocks "
        "then import fewer ghosts per step (0: keep the order)")
       ->check(CLI::Range(0, 65536));
+  auto* partition_option = c->get_option("--partition");
   c->add_option("--seed", f.seed, "Seed of the partitioner's random choices (with --partition)")
       ->check(k_seed);
+  c->add_option("--order", f.order,
+                "Renumber the nodes for the force kernel's cache: rcm (reverse Cuthill-McKee, "
+                "one rank; narrows the band of networks with locality) or degree (hubs first; "
+                "scale-free networks); default original")
+      ->check(CLI::IsMember({"original", "rcm", "degree"}))
+      ->excludes(partition_option);
   f.read.add_to(c);
   c->callback(run);
 }

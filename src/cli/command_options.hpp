@@ -64,6 +64,7 @@ struct ConvertFlags {
   std::string output;
   int partition = 0;
   std::uint64_t seed = 1;
+  std::string order = "original";
   ReadFlags read;
 };
 

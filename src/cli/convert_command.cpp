@@ -9,6 +9,7 @@
 #include <cmath>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <numeric>
 
 #include "cli/command_options.hpp"
 #include "cli/commands.hpp"
@@ -17,6 +18,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "io/network_file.hpp"
+#include "network/node_ordering.hpp"
 #include "parallel/distributed_network_file.hpp"
 #include "parallel/distributed_read.hpp"
 #include "parallel/graph_partition.hpp"
@@ -49,10 +51,46 @@ std::vector<NodeIndex> partition_and_renumber(RowBlock& block, int parts, std::u
               << " stored entries cut (" << static_cast<double>(cut) / static_cast<double>(total[0])
               << ")\n";
   }
-  std::vector<NodeIndex> original(order.new_index.size());
-  for (std::size_t i = 0; i < original.size(); ++i)
-    original[static_cast<std::size_t>(order.new_index[i])] = static_cast<NodeIndex>(i);
-  return original;
+  return inverse_permutation(order.new_index);
+}
+
+// The band of the whole network under `new_index` (the largest over the ranks' blocks).
+double global_bandwidth(const RowBlock& block, const std::vector<NodeIndex>& new_index) {
+  return ParallelSession::max(static_cast<double>(bandwidth(block, new_index)));
+}
+
+// Renumbers `block` in the order `order` (reverse Cuthill-McKee, or by stored entries); records
+// the band before and after in `parameters`; returns the original index of each new node.
+std::vector<NodeIndex> order_and_renumber(RowBlock& block, NodeOrder order,
+                                          nlohmann::json& parameters) {
+  std::vector<NodeIndex> identity(static_cast<std::size_t>(block.n));
+  std::iota(identity.begin(), identity.end(), NodeIndex{0});
+  std::vector<NodeIndex> new_index;
+  if (order == NodeOrder::rcm) {
+    if (ParallelSession::ranks() > 1) {
+      throw ParameterError("--order",
+                           "rcm on " + std::to_string(ParallelSession::ranks()) + " ranks",
+                           "one rank (the breadth-first search runs over the whole network)");
+    }
+    new_index = reverse_cuthill_mckee(block);
+  } else {
+    std::vector<double> entries(static_cast<std::size_t>(block.n), 0.0);
+    for (NodeIndex r = 0; r < block.rows(); ++r) {
+      entries[static_cast<std::size_t>(block.first_row) + static_cast<std::size_t>(r)] =
+          static_cast<double>(block.row_ptr[static_cast<std::size_t>(r) + 1] -
+                              block.row_ptr[static_cast<std::size_t>(r)]);
+    }
+    ParallelSession::sum_in_place(entries);
+    new_index = degree_order(entries);
+  }
+  const double before = global_bandwidth(block, identity);
+  const double after = global_bandwidth(block, new_index);
+  parameters["bandwidth_before"] = before;
+  parameters["bandwidth_after"] = after;
+  if (is_root())
+    std::cerr << "order " << name_of(order) << ": bandwidth " << before << " -> " << after << "\n";
+  block = renumber_rows(block, new_index);
+  return inverse_permutation(new_index);
 }
 
 void run(const ConvertFlags& f) {
@@ -64,14 +102,21 @@ void run(const ConvertFlags& f) {
   require_writable_destination(f.output);
   const auto start = std::chrono::steady_clock::now();
   DistributedRows rows = f.read.read_distributed_rows(f.input);
-  nlohmann::json parameters{{"input", f.input}, {"partition", f.partition}, {"seed", f.seed}};
+  nlohmann::json parameters{
+      {"input", f.input}, {"partition", f.partition}, {"seed", f.seed}, {"order", f.order}};
   std::vector<NodeIndex> original_index;
   if (f.partition > 0 && rows.complete) {
     throw InputError(f.input, 0,
                      "the complete graph is held implicitly: it has no rows to partition");
   }
+  const NodeOrder order = parse_node_order(f.order, "--order");
+  if (order != NodeOrder::original && rows.complete) {
+    throw InputError(f.input, 0, "the complete graph is held implicitly: it has no rows to order");
+  }
   if (f.partition > 0) {
     original_index = partition_and_renumber(rows.block, f.partition, f.seed, parameters);
+  } else if (order != NodeOrder::original) {
+    original_index = order_and_renumber(rows.block, order, parameters);
   }
   const std::string record = provenance("convert", parameters);
   std::uint64_t nnz = 0;

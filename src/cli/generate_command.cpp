@@ -8,9 +8,11 @@
 #include <functional>
 #include <iostream>
 #include <limits>
+#include <memory>
 #include <nlohmann/json.hpp>
 
 #include "cli/command_options.hpp"
+#include "cli/command_reports.hpp"
 #include "cli/commands.hpp"
 #include "cli/provenance.hpp"
 #include "cli/validators.hpp"
@@ -64,38 +66,46 @@ void generate_and_write(const EdgeSource& source, const std::function<Network()>
   std::cerr << ")\n";
 }
 
-void run_er(const ErFlags& f) {
-  check_output(f.output);
+// What one generator makes: its edges by rows (the distributed HDF5 path), the same network whole
+// on one rank (the text path; possibly faster) and the provenance its file records.
+struct Generation {
+  std::shared_ptr<const EdgeSource> source;
+  std::function<Network()> whole;
+  std::string provenance;
+};
+
+Generation generation(const ErFlags& f) {
   const double q = f.q >= 0.0 ? f.q : erdos_renyi_probability(f.n, f.mean_degree);
   const ErdosRenyiParameters params{f.n, q, f.seed};
-  generate_and_write(
-      *erdos_renyi_source(params), [&] { return erdos_renyi(params); }, f.output,
-      provenance("generate er", {{"n", f.n}, {"q", q}, {"seed", f.seed}}));
+  return {erdos_renyi_source(params), [params] { return erdos_renyi(params); },
+          provenance("generate er", {{"n", f.n}, {"q", q}, {"seed", f.seed}})};
 }
 
-void run_sf(const SfFlags& f) {
-  check_output(f.output);
+Generation generation(const SfFlags& f) {
   const double d_min =
       f.d_min > 0.0 ? f.d_min : power_law_d_min_for_mean(f.alpha, f.mean_degree, f.cutoff);
   const PowerLaw law{f.alpha, d_min, f.cutoff};
-  const auto source = chung_lu_source(power_law_targets(f.n, law, f.seed),
-                                      link_probability_from_name(f.link), f.seed);
+  std::shared_ptr<const EdgeSource> source = chung_lu_source(
+      power_law_targets(f.n, law, f.seed), link_probability_from_name(f.link), f.seed);
   nlohmann::json p = {
       {"n", f.n}, {"alpha", f.alpha}, {"d_min", d_min}, {"link", f.link}, {"seed", f.seed}};
   p["cutoff"] = std::isinf(f.cutoff) ? nlohmann::json("none") : nlohmann::json(f.cutoff);
-  generate_and_write(
-      *source, [&] { return network_from_source(*source); }, f.output,
-      provenance("generate sf", p));
+  return {source, [source] { return network_from_source(*source); }, provenance("generate sf", p)};
 }
 
-void run_sbm(const SbmFlags& f) {
+Generation generation(const SbmFlags& f) {
+  std::shared_ptr<const EdgeSource> source =
+      two_block_sbm_source({f.half, f.p_in, f.p_out, f.seed});
+  return {source, [source] { return network_from_source(*source); },
+          provenance("generate sbm",
+                     {{"half", f.half}, {"p_in", f.p_in}, {"p_out", f.p_out}, {"seed", f.seed}})};
+}
+
+template <class Flags>
+void run_generator(const Flags& f) {
   check_output(f.output);
-  const TwoBlockParameters params{f.half, f.p_in, f.p_out, f.seed};
-  const auto source = two_block_sbm_source(params);
-  generate_and_write(
-      *source, [&] { return network_from_source(*source); }, f.output,
-      provenance("generate sbm",
-                 {{"half", f.half}, {"p_in", f.p_in}, {"p_out", f.p_out}, {"seed", f.seed}}));
+  const Generation g = generation(f);
+  generate_and_write(*g.source, g.whole, f.output, g.provenance);
 }
 
 void run_complete(const CompleteFlags& f) {
@@ -116,8 +126,23 @@ void run_complete(const CompleteFlags& f) {
 void add_generate_command(CLI::App& app) {
   static GenerateFlags flags;
   add_generate_options(app, flags,
-                       {[] { run_er(flags.er); }, [] { run_sf(flags.sf); },
-                        [] { run_sbm(flags.sbm); }, [] { run_complete(flags.complete); }});
+                       {[] { run_generator(flags.er); }, [] { run_generator(flags.sf); },
+                        [] { run_generator(flags.sbm); }, [] { run_complete(flags.complete); }});
+}
+
+GeneratedNetwork generated_network(const ErFlags& f) {
+  const Generation g = generation(f);
+  return {g.whole(), g.provenance};
+}
+
+GeneratedNetwork generated_network(const SfFlags& f) {
+  const Generation g = generation(f);
+  return {g.whole(), g.provenance};
+}
+
+GeneratedNetwork generated_network(const SbmFlags& f) {
+  const Generation g = generation(f);
+  return {g.whole(), g.provenance};
 }
 
 }  // namespace hmfnet::cli

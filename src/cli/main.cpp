@@ -9,26 +9,6 @@
 #include "dynamics/interrupt.hpp"
 #include "parallel/parallel_session.hpp"
 
-namespace hmfnet::cli {
-
-namespace {
-std::string g_command_line;
-}
-
-const std::string& command_line() { return g_command_line; }
-
-void set_command_line(int argc, char** argv) {
-  g_command_line.clear();
-  for (int k = 0; k < argc; ++k) {
-    if (k > 0) g_command_line += ' ';
-    g_command_line += argv[k];
-  }
-}
-
-bool is_root() { return ParallelSession::rank() == 0; }
-
-}  // namespace hmfnet::cli
-
 namespace {
 
 int run(int argc, char** argv) {

@@ -25,8 +25,7 @@ struct ReadFlags {
   DistributedInput read_distributed(const std::string& path) const;
   /// The same rows before a DistributedNetwork takes them (`convert`). Collective.
   DistributedRows read_distributed_rows(const std::string& path) const;
-
- private:
+  /// What the readers take from these flags.
   ReadOptions options() const;
 };
 

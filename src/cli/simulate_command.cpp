@@ -6,12 +6,14 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "cli/command_options.hpp"
+#include "cli/command_reports.hpp"
 #include "cli/commands.hpp"
 #include "cli/provenance.hpp"
 #include "cli/read_flags.hpp"
@@ -152,7 +154,17 @@ nlohmann::json point_json(const PointResult& p, double Kc) {
 }
 
 void run(const SimulateFlags& f) {
-  const auto wall_start = std::chrono::steady_clock::now();
+  SimulateHooks hooks;
+  prepare_simulate(f);
+  const DistributedInput input = f.read.read_distributed(f.input);
+  hooks.before_integration = install_interrupt_handlers;
+  const SimulateReport r = simulate_report(f, input, hooks);
+  if (is_root()) std::cout << (f.json ? r.report.json + '\n' : r.report.text) << std::flush;
+}
+
+}  // namespace
+
+void prepare_simulate(const SimulateFlags& f) {
   if (f.threads > 0) {
     omp_set_num_threads(f.threads);
   } else if (ParallelSession::ranks() > 1 && std::getenv("OMP_NUM_THREADS") == nullptr) {
@@ -163,7 +175,10 @@ void run(const SimulateFlags& f) {
   if (!f.output.empty()) require_writable_destination(f.output);
   if (!f.checkpoint.empty()) require_writable_destination(f.checkpoint);
   make_integrator(f.integrator);  // unknown names fail here, before any work
-  const DistributedInput input = f.read.read_distributed(f.input);
+}
+
+SimulateReport simulate_report(const SimulateFlags& f, const DistributedInput& input,
+                               const SimulateHooks& hooks) {
   const CompleteGraph* complete = input.complete ? &*input.complete : nullptr;
   const DistributedNetwork* distributed = input.network.get();
   const double lambda =
@@ -182,11 +197,13 @@ void run(const SimulateFlags& f) {
   if (!f.output.empty()) require_free_space(f.output, results_bytes + checkpoint_bytes);
   if (!f.checkpoint.empty()) require_free_space(f.checkpoint, results_bytes + checkpoint_bytes);
   auto force = choose_force(f, input, *distributed);
-  install_interrupt_handlers();
   const std::vector<double> degrees =
       complete != nullptr ? std::vector<double>(static_cast<std::size_t>(n), complete->degree())
                           : distributed->gather(distributed->local_degrees());
-  const SimulationResult result = simulate(*distributed, degrees, *force, params);
+  if (hooks.before_integration) hooks.before_integration();
+  SimulateReport report;
+  report.result = simulate(*distributed, degrees, *force, params);
+  const SimulationResult& result = report.result;
   if (result.interrupted) {
     const int signal = interrupt_signal();
     throw RunInterrupted(
@@ -241,28 +258,27 @@ void run(const SimulateFlags& f) {
     prov["threads"] = result.threads;
     prov["peak_rss_mb_per_rank"] = peak_mb;
     prov["wall_seconds"] =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - hooks.started).count();
     meta.provenance_json = prov.dump();
     meta.Kc = Kc;
     if (is_root()) write_run_file(f.output, result, params, meta);
   }
-  if (!is_root()) return;
-  if (f.json) {
-    std::cout << out.dump() << std::endl;
-    return;
-  }
-  std::cout << "N = " << n << ", nnz = " << nnz << ", lambda = " << lambda << ", K_c = " << Kc
-            << " (" << result.force_name << " force, "
-            << out["nnz_steps_per_second"].get<double>() / 1e9 << " Gnnz*steps/s)\n"
-            << "       K    K/K_c     <R>_t       sem   max dE/E  P drift\n";
+  report.report.json = out.dump();
+  std::ostringstream text;
+  text << "N = " << n << ", nnz = " << nnz << ", lambda = " << lambda << ", K_c = " << Kc << " ("
+       << result.force_name << " force, " << out["nnz_steps_per_second"].get<double>() / 1e9
+       << " Gnnz*steps/s)\n"
+       << "       K    K/K_c     <R>_t       sem   max dE/E  P drift\n";
   for (const auto& p : out["points"]) {
-    std::printf("%8.4g %8.4f %9.5f %9.2e %10.2e %8.1e\n", p["K"].get<double>(),
-                p["K_over_Kc"].get<double>(), p["R_mean"].get<double>(), p["R_sem"].get<double>(),
-                p["energy_rel_error_max"].get<double>(), p["momentum_drift"].get<double>());
+    char line[128];
+    std::snprintf(line, sizeof line, "%8.4g %8.4f %9.5f %9.2e %10.2e %8.1e\n", p["K"].get<double>(),
+                  p["K_over_Kc"].get<double>(), p["R_mean"].get<double>(), p["R_sem"].get<double>(),
+                  p["energy_rel_error_max"].get<double>(), p["momentum_drift"].get<double>());
+    text << line;
   }
+  report.report.text = text.str();
+  return report;
 }
-
-}  // namespace
 
 void add_simulate_command(CLI::App& app) {
   static SimulateFlags f;

@@ -3,9 +3,11 @@
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "analysis/network_summary.hpp"
 #include "cli/command_options.hpp"
+#include "cli/command_reports.hpp"
 #include "cli/commands.hpp"
 #include "cli/read_flags.hpp"
 #include "cli/validators.hpp"
@@ -21,39 +23,39 @@ namespace {
 // 10^7 (N = 10^5), where the bounds settle the warning in a few dozen products.
 constexpr EdgeOffset k_converged_lambda2_entries = 4'000'000;
 
-void print_text(const NetworkSummary& s) {
-  std::cout << std::setprecision(8) << "nodes              " << s.n << "\n"
-            << "edges              " << s.edges << " (nnz " << s.nnz << ", self-loops "
-            << s.self_loops << (s.weighted ? ", weighted" : "") << ")\n"
-            << "mean degree        " << s.mean_degree << " (max " << s.max_degree << ")\n"
-            << "lambda             " << s.lambda << " (residual " << s.lambda_residual << ", "
-            << s.eigen_iterations << " iterations, " << s.eigen_seconds << " s)\n"
-            << "rho                " << s.rho << "\n"
-            << "G                  " << s.G << "\n";
+void print_text(std::ostream& out, const NetworkSummary& s) {
+  out << std::setprecision(8) << "nodes              " << s.n << "\n"
+      << "edges              " << s.edges << " (nnz " << s.nnz << ", self-loops " << s.self_loops
+      << (s.weighted ? ", weighted" : "") << ")\n"
+      << "mean degree        " << s.mean_degree << " (max " << s.max_degree << ")\n"
+      << "lambda             " << s.lambda << " (residual " << s.lambda_residual << ", "
+      << s.eigen_iterations << " iterations, " << s.eigen_seconds << " s)\n"
+      << "rho                " << s.rho << "\n"
+      << "G                  " << s.G << "\n";
   if (std::isnan(s.lambda2) && std::isfinite(s.lambda2_lower)) {
-    std::cout << "lambda_2           in [" << s.lambda2_lower << ", " << s.lambda2_upper
-              << "] (Lanczos bounds, " << s.lambda2_bound_steps
-              << " steps; the upper one with probability >= 1 - " << s.lambda2_bound_failure << ")";
+    out << "lambda_2           in [" << s.lambda2_lower << ", " << s.lambda2_upper
+        << "] (Lanczos bounds, " << s.lambda2_bound_steps
+        << " steps; the upper one with probability >= 1 - " << s.lambda2_bound_failure << ")";
     if (std::isfinite(s.second_mode_ratio)) {
-      std::cout << ": lambda / lambda_2 >= " << s.second_mode_ratio;
+      out << ": lambda / lambda_2 >= " << s.second_mode_ratio;
     }
-    std::cout << ", Perron vector error <= " << s.eigenvector_error_bound << "\n";
+    out << ", Perron vector error <= " << s.eigenvector_error_bound << "\n";
   } else if (std::isnan(s.lambda2)) {
     // Few distinct eigenvalues (a star has three) defeat Krylov-Schur for a second pair.
-    std::cout << "lambda_2           not found (no second eigenpair passed its residual check)\n";
+    out << "lambda_2           not found (no second eigenpair passed its residual check)\n";
   } else {
-    std::cout << "lambda_2           " << s.lambda2;
+    out << "lambda_2           " << s.lambda2;
     if (std::isfinite(s.second_mode_ratio)) {
-      std::cout << " (lambda / lambda_2 = " << s.second_mode_ratio << ",";
+      out << " (lambda / lambda_2 = " << s.second_mode_ratio << ",";
     } else {
-      std::cout << " (";
+      out << " (";
     }
-    std::cout << " Perron vector error <= " << s.eigenvector_error_bound << ")\n";
+    out << " Perron vector error <= " << s.eigenvector_error_bound << ")\n";
   }
-  std::cout << "components         " << s.components << " (largest " << s.largest_component << ")\n"
-            << "bipartite          " << (s.bipartite ? "yes" : "no") << "\n";
-  if (s.sigma0 > 0.0) std::cout << "K_c (sigma0 = " << s.sigma0 << ")  " << s.Kc << "\n";
-  for (const auto& w : s.warnings) std::cout << "warning: " << w << "\n";
+  out << "components         " << s.components << " (largest " << s.largest_component << ")\n"
+      << "bipartite          " << (s.bipartite ? "yes" : "no") << "\n";
+  if (s.sigma0 > 0.0) out << "K_c (sigma0 = " << s.sigma0 << ")  " << s.Kc << "\n";
+  for (const auto& w : s.warnings) out << "warning: " << w << "\n";
 }
 
 NetworkSummary summary(const SpectrumFlags& f, const DistributedInput& input) {
@@ -70,20 +72,30 @@ NetworkSummary summary(const SpectrumFlags& f, const DistributedInput& input) {
 }
 
 void run(const SpectrumFlags& f) {
-  const NetworkSummary s = summary(f, f.read.read_distributed(f.input));
-  const std::vector<double> peak_mb = ParallelSession::peak_memory_mb();  // collective
+  const CommandReport report = spectrum_report(f, f.read.read_distributed(f.input));
   if (!is_root()) return;
   if (f.json) {
-    nlohmann::json j = nlohmann::json::parse(to_json(s));
-    j["ranks"] = ParallelSession::ranks();
-    j["peak_rss_mb_per_rank"] = peak_mb;
-    std::cout << j.dump() << std::endl;
+    std::cout << report.json << std::endl;
   } else {
-    print_text(s);
+    std::cout << report.text;
   }
 }
 
 }  // namespace
+
+CommandReport spectrum_report(const SpectrumFlags& f, const DistributedInput& input) {
+  const NetworkSummary s = summary(f, input);
+  const std::vector<double> peak_mb = ParallelSession::peak_memory_mb();  // collective
+  CommandReport report;
+  nlohmann::json j = nlohmann::json::parse(to_json(s));
+  j["ranks"] = ParallelSession::ranks();
+  j["peak_rss_mb_per_rank"] = peak_mb;
+  report.json = j.dump();
+  std::ostringstream text;
+  print_text(text, s);
+  report.text = text.str();
+  return report;
+}
 
 void add_spectrum_command(CLI::App& app) {
   static SpectrumFlags f;

@@ -14,10 +14,12 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "cli/command_options.hpp"
+#include "cli/command_reports.hpp"
 #include "cli/commands.hpp"
 #include "cli/read_flags.hpp"
 #include "cli/validators.hpp"
@@ -89,32 +91,30 @@ nlohmann::json to_json(const TheoryReport& t, const TheoryFlags& f, NodeIndex n)
   return j;
 }
 
-void print_text(const TheoryReport& t, const TheoryFlags& f) {
-  std::cout << std::setprecision(6) << "lambda             " << t.lambda << "\n"
-            << "K_c                " << t.Kc << " (linear threshold, " << name_of(t.momenta)
-            << " momenta, sigma0 = " << f.sigma0 << ")\n"
-            << "K_c equilibrium    " << t.Kc_equilibrium << " (eq:rSigmaBesselMain leaves R = 0)\n"
-            << "G                  " << t.G << "\n"
-            << "R_hat (K -> inf)   " << t.large_k.R_hat << " (eq:KtoInfinity, "
-            << t.large_k.iterations << " iterations), " << t.R_hat_degree
-            << " (degree approximation eq:rd)\n\n"
-            << std::setw(12) << "K" << std::setw(10) << "K/K_c" << std::setw(12) << "R"
-            << std::setw(12) << "G*sqrt" << std::setw(12) << "sigma^2" << std::setw(12) << "gamma"
-            << std::setw(7) << "iter" << std::setw(12) << "residual"
-            << "  status\n";
+void print_text(std::ostream& out, const TheoryReport& t, const TheoryFlags& f) {
+  out << std::setprecision(6) << "lambda             " << t.lambda << "\n"
+      << "K_c                " << t.Kc << " (linear threshold, " << name_of(t.momenta)
+      << " momenta, sigma0 = " << f.sigma0 << ")\n"
+      << "K_c equilibrium    " << t.Kc_equilibrium << " (eq:rSigmaBesselMain leaves R = 0)\n"
+      << "G                  " << t.G << "\n"
+      << "R_hat (K -> inf)   " << t.large_k.R_hat << " (eq:KtoInfinity, " << t.large_k.iterations
+      << " iterations), " << t.R_hat_degree << " (degree approximation eq:rd)\n\n"
+      << std::setw(12) << "K" << std::setw(10) << "K/K_c" << std::setw(12) << "R" << std::setw(12)
+      << "G*sqrt" << std::setw(12) << "sigma^2" << std::setw(12) << "gamma" << std::setw(7)
+      << "iter" << std::setw(12) << "residual"
+      << "  status\n";
   for (const auto& p : t.points) {
     const double kappa = p.K / t.Kc;
-    std::cout << std::setw(12) << p.K << std::setw(10) << kappa << std::setw(12) << p.R
-              << std::setw(12) << onset_order_parameter(t.G, p.K / t.Kc_equilibrium)
-              << std::setw(12) << p.sigma2 << std::setw(12)
-              << (kappa > 1.0 ? growth_rate(t.momenta, kappa, f.sigma0) : 0.0) << std::setw(7)
-              << p.iterations << std::setw(12) << p.residual << "  " << solve_status_name(p.status)
-              << "\n";
+    out << std::setw(12) << p.K << std::setw(10) << kappa << std::setw(12) << p.R << std::setw(12)
+        << onset_order_parameter(t.G, p.K / t.Kc_equilibrium) << std::setw(12) << p.sigma2
+        << std::setw(12) << (kappa > 1.0 ? growth_rate(t.momenta, kappa, f.sigma0) : 0.0)
+        << std::setw(7) << p.iterations << std::setw(12) << p.residual << "  "
+        << solve_status_name(p.status) << "\n";
   }
 }
 
-// One line naming every K that did not converge (the caller prints the results first).
-void require_converged(const TheoryReport& t) {
+// One line naming every K that did not converge, or "" (the caller prints the results first).
+std::string convergence_failures(const TheoryReport& t) {
   std::string failed;
   for (const auto& p : t.points) {
     if (p.status == SolveStatus::failed)
@@ -122,10 +122,9 @@ void require_converged(const TheoryReport& t) {
   }
   if (t.large_k.status == SolveStatus::failed)
     failed += " K -> infinity: " + t.large_k.message + ";";
-  if (!failed.empty()) {
-    failed.pop_back();
-    throw ConvergenceError("eq:rSigmaBesselMain:" + failed);
-  }
+  if (failed.empty()) return failed;
+  failed.pop_back();
+  return "eq:rSigmaBesselMain:" + failed;
 }
 
 // The network the solvers run on, and the numbers the report quotes. Stored rows stay
@@ -171,8 +170,16 @@ TheoryNetwork theory_network(const DistributedInput& input) {
 }
 
 void run(const TheoryFlags& f) {
+  const CommandReport report = theory_report(f, f.read.read_distributed(f.input));
+  if (!is_root()) return;  // rank 0 prints the report, then the failure once
+  std::cout << (f.json ? report.json + '\n' : report.text) << std::flush;
+  if (!report.not_converged.empty()) throw ConvergenceError(report.not_converged);
+}
+
+}  // namespace
+
+CommandReport theory_report(const TheoryFlags& f, const DistributedInput& input) {
   // Step 1: the network and its Perron pair (collective over MPI ranks).
-  const DistributedInput input = f.read.read_distributed(f.input);
   const TheoryNetwork net = theory_network(input);
   const PerronResult& perron = net.solved_pair;
   // Step 2: K_c, G, the couplings asked for.
@@ -203,20 +210,18 @@ void run(const TheoryFlags& f) {
   });
   t.R_hat_degree = degree_approximation_R_hat(net.product->degrees());
   const std::vector<double> peak_mb = ParallelSession::peak_memory_mb();
-  if (!is_root()) return;
-  if (f.json) {
-    nlohmann::json j = to_json(t, f, net.n);
-    j["nnz"] = net.nnz;
-    j["ranks"] = ParallelSession::ranks();
-    j["peak_rss_mb_per_rank"] = peak_mb;
-    std::cout << j.dump() << std::endl;
-  } else {
-    print_text(t, f);
-  }
-  require_converged(t);
+  CommandReport report;
+  nlohmann::json j = to_json(t, f, net.n);
+  j["nnz"] = net.nnz;
+  j["ranks"] = ParallelSession::ranks();
+  j["peak_rss_mb_per_rank"] = peak_mb;
+  report.json = j.dump();
+  std::ostringstream text;
+  print_text(text, t, f);
+  report.text = text.str();
+  report.not_converged = convergence_failures(t);
+  return report;
 }
-
-}  // namespace
 
 void add_theory_command(CLI::App& app) {
   static TheoryFlags f;

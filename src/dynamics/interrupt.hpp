@@ -8,8 +8,9 @@
 
 namespace hmfnet {
 
-/// Installs the handlers for SIGINT and SIGTERM (idempotent). Called by the CLI, not the library:
-/// an application embedding hmfnet keeps its own signal policy.
+/// Installs the handlers for SIGINT and SIGTERM (idempotent). Called by the CLI and, around an
+/// integration only, by the Python module (src/python/python_commands.cpp, which restores the
+/// interpreter's handler after), not by the library: an embedding keeps its own signal policy.
 void install_interrupt_handlers();
 
 /// The signal that asked for a stop (SIGINT, SIGTERM), or 0.

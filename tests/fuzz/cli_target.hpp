@@ -136,6 +136,9 @@ inline bool parse_command_line(std::vector<std::string> args) {
   cli::add_convert_options(app, convert, [&] {
     const RangeChecks c(line);
     c.require(convert.partition >= 0 && convert.partition <= 65536, "--partition range");
+    c.require(convert.order == "original" || convert.order == "rcm" || convert.order == "degree",
+              "--order not a known order");
+    c.require(convert.partition == 0 || convert.order == "original", "--partition with --order");
     c.read_flags(convert.read);
     reached = true;
   });
@@ -191,7 +194,7 @@ inline const std::vector<std::string>& argument_tokens() {
       "", "-", "true", "x",
       // appended (token-mode seeds index the entries above)
       "--precision", "float32", "float64", "--K-across-replicas", "--momenta", "gaussian",
-      "waterbag"};
+      "waterbag", "--order", "rcm", "degree", "original"};
   return tokens;
 }
 

@@ -1,0 +1,148 @@
+// The commands on a Python network: the same functions the CLI runs (cli/command_reports.hpp),
+// so the numbers equal the CLI's on the same network and parameters; the report comes back as
+// the dict that `--json` prints, and `simulate` adds its time series as numpy arrays.
+#include "python/python_commands.hpp"
+
+#include <omp.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+#include <signal.h>
+
+#include <csignal>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "cli/command_reports.hpp"
+#include "core/error.hpp"
+#include "dynamics/interrupt.hpp"
+#include "python/python_arguments.hpp"
+#include "python/python_network.hpp"
+
+namespace py = pybind11;
+
+namespace hmfnet::python {
+
+namespace {
+
+py::object to_python(const std::string& json) {
+  return py::module_::import("json").attr("loads")(json);
+}
+
+// records x replicas, row-major, as a 2-D array.
+py::array_t<double> matrix(const std::vector<double>& values, std::size_t rows) {
+  const std::size_t cols = rows == 0 ? 0 : values.size() / rows;
+  py::array_t<double> a({static_cast<py::ssize_t>(rows), static_cast<py::ssize_t>(cols)});
+  std::copy(values.begin(), values.end(), a.mutable_data());
+  return a;
+}
+
+py::array_t<double> vector(const std::vector<double>& values) {
+  py::array_t<double> a(static_cast<py::ssize_t>(values.size()));
+  std::copy(values.begin(), values.end(), a.mutable_data());
+  return a;
+}
+
+// One command at a time: MPI, Tpetra and the interrupt flag are process-wide, and two Python
+// threads could otherwise enter them together once the GIL is released.
+std::mutex g_command_mutex;
+
+// Ctrl-C goes to the simulation's flag while it integrates (the interpreter cannot see it while
+// the GIL is released): the run stops at the next record and RunInterrupted becomes
+// KeyboardInterrupt. SIGINT's disposition is saved with its flags and restored as it was; SIGTERM
+// keeps Python's.
+class ScopedInterruptHandler {
+ public:
+  ScopedInterruptHandler() { sigaction(SIGINT, nullptr, &m_saved); }
+  ~ScopedInterruptHandler() {
+    if (m_installed) sigaction(SIGINT, &m_saved, nullptr);
+    set_interrupt_signal(0);
+  }
+  ScopedInterruptHandler(const ScopedInterruptHandler&) = delete;
+  ScopedInterruptHandler& operator=(const ScopedInterruptHandler&) = delete;
+
+  void install() {
+    struct sigaction term {};
+    sigaction(SIGTERM, nullptr, &term);
+    set_interrupt_signal(0);
+    install_interrupt_handlers();
+    sigaction(SIGTERM, &term, nullptr);
+    m_installed = true;
+  }
+
+ private:
+  struct sigaction m_saved {};
+  bool m_installed = false;
+};
+
+// omp_set_num_threads (simulate's --threads) lasts for the process: a Python call must not
+// change the thread count of the calls after it.
+class ScopedThreadCount {
+ public:
+  ScopedThreadCount() : m_threads(omp_get_max_threads()) {}
+  ~ScopedThreadCount() { omp_set_num_threads(m_threads); }
+  ScopedThreadCount(const ScopedThreadCount&) = delete;
+  ScopedThreadCount& operator=(const ScopedThreadCount&) = delete;
+
+ private:
+  int m_threads;
+};
+
+py::object spectrum(const PythonNetwork& net, const std::vector<std::string>& tokens) {
+  cli::SpectrumFlags f;
+  parse_arguments(f, net.source, tokens);
+  const cli::CommandReport report = [&] {
+    py::gil_scoped_release release;
+    const std::lock_guard<std::mutex> lock(g_command_mutex);
+    return cli::spectrum_report(f, net.distributed());
+  }();
+  return to_python(report.json);
+}
+
+py::object theory(const PythonNetwork& net, const std::vector<std::string>& tokens) {
+  cli::TheoryFlags f;
+  parse_arguments(f, net.source, tokens);
+  const cli::CommandReport report = [&] {
+    py::gil_scoped_release release;
+    const std::lock_guard<std::mutex> lock(g_command_mutex);
+    return cli::theory_report(f, net.distributed());
+  }();
+  if (!report.not_converged.empty()) throw ConvergenceError(report.not_converged);
+  return to_python(report.json);
+}
+
+py::object simulate(const PythonNetwork& net, const std::vector<std::string>& tokens) {
+  cli::SimulateFlags f;
+  parse_arguments(f, net.source, tokens);
+  f.quiet = true;  // no progress line on a notebook's stderr
+  const cli::SimulateReport run = [&] {
+    py::gil_scoped_release release;
+    const std::lock_guard<std::mutex> lock(g_command_mutex);
+    const ScopedThreadCount threads;
+    ScopedInterruptHandler handler;
+    cli::SimulateHooks hooks;
+    cli::prepare_simulate(f);
+    hooks.before_integration = [&handler] { handler.install(); };
+    return cli::simulate_report(f, net.distributed(), hooks);
+  }();
+  py::dict out = to_python(run.report.json);
+  const TimeSeries& s = run.result.series;
+  py::dict series;
+  series["t"] = vector(s.t);
+  series["K"] = vector(s.K);
+  series["R"] = matrix(s.R, s.t.size());
+  series["energy"] = matrix(s.energy, s.t.size());
+  series["momentum"] = matrix(s.momentum, s.t.size());
+  out["timeseries"] = series;
+  return std::move(out);
+}
+
+}  // namespace
+
+void bind_commands(py::module_& m) {
+  m.def("_spectrum", &spectrum, py::arg("network"), py::arg("tokens"));
+  m.def("_theory", &theory, py::arg("network"), py::arg("tokens"));
+  m.def("_simulate", &simulate, py::arg("network"), py::arg("tokens"));
+}
+
+}  // namespace hmfnet::python

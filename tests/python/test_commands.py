@@ -1,0 +1,110 @@
+"""spectrum, theory and simulate from Python against the CLI on the same network file and
+parameters: the same code path (cli/command_reports.hpp), so the numbers must agree to
+round-off (the network reaches the CLI through a file, rebuilt row by row: same matrix, same
+order of operations; 1e-12 relative leaves room for nothing but that)."""
+import numpy as np
+import pytest
+
+import hmfnet
+
+RTOL = 1e-12  # same code, same matrix: round-off only (see the module docstring)
+
+
+def test_spectrum_equals_the_cli(karate, run_cli):
+    net, path = karate
+    py = hmfnet.spectrum(net, sigma0=0.35)
+    cli = run_cli("spectrum", path, "--json", "--sigma0", 0.35)
+    for key in ("lambda", "rho", "G", "Kc", "mean_degree", "lambda2"):
+        assert py[key] == pytest.approx(cli[key], rel=RTOL), key
+    for key in ("n", "nnz", "edges", "components", "bipartite", "warnings"):
+        assert py[key] == cli[key], key
+
+
+def test_theory_equals_the_cli(karate, run_cli):
+    net, path = karate
+    for momenta in ("gaussian", "waterbag"):
+        py = hmfnet.theory(net, sigma0=0.35, K_over_Kc=[0.5, 1.5, 3.0], momenta=momenta)
+        cli = run_cli("theory", path, "--json", "--sigma0", 0.35, "--K-over-Kc", "0.5,1.5,3",
+                      "--momenta", momenta)
+        for key in ("lambda", "Kc", "Kc_equilibrium", "G", "R_hat_iteration"):
+            assert py[key] == pytest.approx(cli[key], rel=RTOL), key
+        np.testing.assert_allclose(py["R"], [p["R"] for p in cli["points"]], rtol=RTOL)
+        np.testing.assert_allclose(py["sigma2"], [p["sigma2"] for p in cli["points"]], rtol=RTOL)
+        assert list(py["status"]) == [p["status"] for p in cli["points"]]
+        assert py["R"].dtype == float and py["K"].shape == (3,)
+
+
+def test_theory_on_the_complete_graph_needs_no_rows():
+    th = hmfnet.theory(hmfnet.generate.complete(10**6), sigma0=0.35, K_over_Kc=[2.0])
+    # eq:criticalKFirstOrder with lambda = N - 1 exactly.
+    assert th["Kc"] == pytest.approx(2 * 0.35**2 * 10**6 / (10**6 - 1), rel=1e-15)
+    assert 0.0 < th["R"][0] < 1.0
+
+
+def test_simulate_equals_the_cli(karate, run_cli, tmp_path):
+    net, path = karate
+    args = dict(K_over_Kc=[1.5, 3.0], T=40, transient=10, seed=7, replicas=2, threads=1,
+                record_stride=50)
+    py = hmfnet.simulate(net, output=str(tmp_path / "py.h5"), **args)
+    cli = run_cli("simulate", path, "--json", "--K-over-Kc", "1.5,3", "--T", 40, "--transient",
+                  10, "--seed", 7, "--replicas", 2, "--threads", 1, "--record-stride", 50,
+                  "-o", tmp_path / "cli.h5")
+    # One code path and one thread: the integration is the same sequence of operations.
+    np.testing.assert_array_equal(py["R_mean_replicas"],
+                                  [p["R_mean_replicas"] for p in cli["points"]])
+    np.testing.assert_array_equal(py["energy_rel_error_max"],
+                                  [p["energy_rel_error_max"] for p in cli["points"]])
+    assert py["steps"] == cli["steps"] == 2 * 4000
+    assert py["R_mean_replicas"].shape == (2, 2)
+    series = py["timeseries"]
+    assert series["R"].shape == (len(series["t"]), 2) == series["energy"].shape
+    # The results files of both hold the same numbers.
+    a, b = hmfnet.read_run(tmp_path / "py.h5"), hmfnet.read_run(tmp_path / "cli.h5")
+    for group in ("points", "timeseries"):
+        for key in b[group]:
+            np.testing.assert_array_equal(a[group][key], b[group][key], err_msg=key)
+    np.testing.assert_array_equal(a["timeseries"]["R"], series["R"])
+
+
+def test_read_run_round_trips_the_cli_file(karate, run_cli, tmp_path):
+    _, path = karate
+    out = tmp_path / "run.h5"
+    cli = run_cli("simulate", path, "--json", "--K", "0.5,2", "--T", 20, "--transient", 5,
+                  "--seed", 3, "--threads", 1, "-o", out)
+    run = hmfnet.read_run(out)
+    np.testing.assert_array_equal(run["points"]["K"], [0.5, 2.0])
+    np.testing.assert_array_equal(run["points"]["R_mean"][:, 0],
+                                  [p["R_mean"] for p in cli["points"]])
+    assert run["parameters"]["replicas"][0]["seed"] == 3
+    assert run["network"]["n"] == cli["n"] and run["network"]["lambda"] == cli["lambda"]
+    assert run["attributes"]["steps"] == cli["steps"]
+    assert list(run["points"]["integrator"]) == ["leapfrog", "leapfrog"]
+    network_file = tmp_path / "k.h5"
+    hmfnet.generate.complete(10).save(str(network_file))
+    with pytest.raises(ValueError, match="not an hmfnet results file"):
+        hmfnet.read_run(network_file)
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda n: hmfnet.theory(n, sigma0=0.0, K=[1]), "--sigma0: value 0.0 is not allowed \\(allowed: > 0\\)"),
+    (lambda n: hmfnet.theory(n, sigma0=0.3), "--K / --K-over-Kc"),
+    (lambda n: hmfnet.theory(n, sigma0=0.3, K=[1], K_over_Kc=[1]), "excludes"),
+    (lambda n: hmfnet.theory(n, sigma0=0.3, K=[1], momenta="lorentz"), "--momenta"),
+    (lambda n: hmfnet.theory(n, sigma0=0.3, K=[1], tolerance=1.0), "--tolerance"),
+    (lambda n: hmfnet.spectrum(n, lambda2="exact"), "--lambda2"),
+    (lambda n: hmfnet.simulate(n, seed=1), "one of --K, --K-over-Kc or --K-sweep"),
+    (lambda n: hmfnet.simulate(n, seed=1, K=[1], h=-0.1), "--h: value -0.1"),
+    (lambda n: hmfnet.simulate(n, seed=1, K=[1], replicas=65), "--replicas"),
+    (lambda n: hmfnet.simulate(n, seed=1, K=[1], sigma0=float("nan")), "--sigma0"),
+    (lambda n: hmfnet.simulate(n, seed=1, K=[1], integrator="euler"), "euler"),
+    (lambda n: hmfnet.simulate(n, seed=1, K_sweep="1:0:1"), "--K-sweep"),
+    (lambda n: hmfnet.simulate(n, seed=1, K=[1], resume=True), "--checkpoint"),
+])
+def test_parameters_out_of_range_raise_value_error(karate, call, message):
+    with pytest.raises(ValueError, match=message):
+        call(karate[0])
+
+
+def test_a_step_that_blows_up_raises(karate):
+    with pytest.raises(hmfnet.SimulationBlowUp, match="energy"):
+        hmfnet.simulate(karate[0], seed=1, K=[50.0], h=1.5, T=30, transient=0, threads=1)
