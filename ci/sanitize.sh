@@ -12,10 +12,10 @@ bash ci/install-deps.sh
 # -O1 -g1 (line tables): the optimisation level the sanitizers' authors recommend, and stack
 # traces with file:line; measured on two heavy files (Tpetra, Catch2), it compiles in 0.50-0.62
 # of the time of RelWithDebInfo's -O2 -g, which made this job's build ~13 of CI's 45 minutes.
-# No Python module (HMFNET_PYTHON=OFF): an instrumented extension cannot load into Debian's
+# No Python module (HMFNET_PYTHON_MODULE=OFF): an instrumented extension cannot load into Debian's
 # uninstrumented interpreter, and its tests run in the main job.
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
-  -DHMFNET_SANITIZE=address,undefined -DHMFNET_PYTHON=OFF \
+  -DHMFNET_SANITIZE=address,undefined -DHMFNET_PYTHON_MODULE=OFF \
   -DHMFNET_BUILD_BENCH=OFF -DHMFNET_WERROR=OFF > build-asan.log 2>&1 || { cat build-asan.log; exit 1; }
 # The build runs the test binaries to list their Catch2 tests: no leak reports from MPI there.
 export ASAN_OPTIONS="detect_leaks=0"

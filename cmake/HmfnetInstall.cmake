@@ -46,7 +46,7 @@ write_basic_package_version_file(${CMAKE_BINARY_DIR}/hmfnetConfigVersion.cmake
 install(FILES ${CMAKE_BINARY_DIR}/hmfnetConfig.cmake ${CMAKE_BINARY_DIR}/hmfnetConfigVersion.cmake
         DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/hmfnet)
 
-if(HMFNET_PYTHON)
+if(HMFNET_PYTHON_MODULE)
   file(RELATIVE_PATH _hmfnet_module_to_lib
        ${CMAKE_INSTALL_PREFIX}/${HMFNET_PYTHON_INSTALL_DIR}/hmfnet
        ${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_LIBDIR})
@@ -68,7 +68,7 @@ set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-if(HMFNET_PYTHON)
+if(HMFNET_PYTHON_MODULE)
   # The extension is built for this CPython (3.11 on Debian 12) only.
   math(EXPR _hmfnet_next_minor "${Python3_VERSION_MINOR} + 1")
   set(CPACK_DEBIAN_PACKAGE_DEPENDS "python3 (>= ${Python3_VERSION_MAJOR}.${Python3_VERSION_MINOR}), \
