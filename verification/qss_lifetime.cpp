@@ -27,7 +27,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -37,7 +36,7 @@
 #include "parallel/distributed_network.hpp"
 #include "parallel/parallel_session.hpp"
 #include "support/claim_check.hpp"
-#include "support/sample_statistics.hpp"
+#include "support/passage_time.hpp"
 #include "support/work_account.hpp"
 #include "theory/all_to_all.hpp"
 
@@ -57,28 +56,6 @@ struct Life {
   int passed = 0;            // bootstrap resamples whose passage came within T(N)
   std::vector<double> t, R;  // replica mean R(t)
 };
-
-// The rule of the header on the mean of the chosen replicas' series; NaN if never passed.
-double first_passage(const std::vector<double>& t, const std::vector<double>& R_all,
-                     const std::vector<int>& chosen, double M_eq) {
-  const std::size_t records = t.size();
-  std::vector<double> mean(records, 0.0);
-  for (std::size_t i = 0; i < records; ++i) {
-    for (const int b : chosen) mean[i] += R_all[i * kReplicas + static_cast<std::size_t>(b)];
-    mean[i] /= static_cast<double>(chosen.size());
-  }
-  const double dt = t[1] - t[0];
-  const auto width = static_cast<std::size_t>(std::lround(kSmooth / dt));
-  double start = 0.0;
-  for (std::size_t i = 0; i < width; ++i) start += mean[i] / static_cast<double>(width);
-  const double half = 0.5 * (start + M_eq);
-  double window = start * static_cast<double>(width);
-  for (std::size_t i = width; i < records; ++i) {
-    window += mean[i] - mean[i - width];
-    if (window / static_cast<double>(width) >= half) return t[i] - 0.5 * kSmooth;
-  }
-  return NAN;
-}
 
 Life measure(ClaimCheck& check, NodeIndex n) {
   const CompleteGraph graph = CompleteGraph::make(n, true);
@@ -111,20 +88,20 @@ Life measure(ClaimCheck& check, NodeIndex n) {
   }
   // eq:rSigmaBesselMain on K_N at U0 = 0: kappa = 1 / (2 (2U - 1)) (all_to_all_caloric_curve.cpp).
   life.M_eq = all_to_all_order_parameter(1.0 / (2.0 * (2.0 * life.U - 1.0)));
-  std::vector<int> all(kReplicas);
-  for (int b = 0; b < kReplicas; ++b) all[static_cast<std::size_t>(b)] = b;
-  life.life = first_passage(r.series.t, r.series.R, all, life.M_eq);
-  std::mt19937_64 rng(static_cast<std::uint64_t>(n));
-  std::uniform_int_distribution<int> pick(0, kReplicas - 1);
-  std::vector<double> resampled;
-  for (int k = 0; k < kBootstrap; ++k) {
-    std::vector<int> chosen(kReplicas);
-    for (auto& c : chosen) c = pick(rng);
-    const double x = first_passage(r.series.t, r.series.R, chosen, life.M_eq);
-    if (std::isfinite(x)) resampled.push_back(x);
-  }
-  life.se = verification::mean_sd(resampled).sd;
-  life.passed = static_cast<int>(resampled.size());
+  // The rule of the header (support/passage_time.hpp), target M_eq.
+  const verification::ReplicaSeries series{&r.series.R, kReplicas, 0, records};
+  const double dt = r.series.t[1] - r.series.t[0];
+  const auto width = static_cast<std::size_t>(std::lround(kSmooth / dt));
+  const double M_eq = life.M_eq;
+  const verification::Passage passage = verification::bootstrap_passage(
+      series,
+      [&](const std::vector<double>& mean) {
+        return verification::half_way_passage(mean, r.series.t[0] - dt, dt, width, M_eq);
+      },
+      kBootstrap, static_cast<std::uint64_t>(n));
+  life.life = passage.time;
+  life.se = passage.se;
+  life.passed = passage.passed;
   for (std::size_t i = 0; i < records; ++i) {
     double m = 0.0;
     for (std::size_t b = 0; b < kReplicas; ++b) m += r.series.R[i * kReplicas + b] / kReplicas;
@@ -132,9 +109,9 @@ Life measure(ClaimCheck& check, NodeIndex n) {
     life.R.push_back(m);
   }
   std::printf(
-      "  INFO  N = %d: U = %.4f, M_eq = %.4f, life %.0f +- %.0f (T = %.0f, %zu of %d "
+      "  INFO  N = %d: U = %.4f, M_eq = %.4f, life %.0f +- %.0f (T = %.0f, %d of %d "
       "bootstrap resamples passed), max |dH/H| %.1e\n",
-      n, life.U, life.M_eq, life.life, life.se, p.duration, resampled.size(), kBootstrap,
+      n, life.U, life.M_eq, life.life, life.se, p.duration, life.passed, kBootstrap,
       life.energy_error);
   return life;
 }
@@ -164,19 +141,14 @@ int main(int argc, char** argv) {
     check.data("R_N" + std::to_string(n), series, series.size() / 2, {"t", "R replica mean"});
   }
   // Weighted least squares of ln(life) on ln N: sigma(ln life) = se / life.
-  double sw = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  std::vector<double> ns, ls, ses;
   for (const Life& l : lives) {
-    if (!std::isfinite(l.life) || !(l.se > 0.0)) continue;
-    const double w = std::pow(l.life / l.se, 2), x = std::log(l.n), y = std::log(l.life);
-    sw += w;
-    sx += w * x;
-    sy += w * y;
-    sxx += w * x * x;
-    sxy += w * x * y;
+    ns.push_back(static_cast<double>(l.n));
+    ls.push_back(l.life);
+    ses.push_back(l.se);
   }
-  const double det = sw * sxx - sx * sx;
-  const double slope = det > 0.0 ? (sw * sxy - sx * sy) / det : NAN;
-  const double slope_se = det > 0.0 ? std::sqrt(sw / det) : NAN;
+  const verification::PowerLaw fit = verification::power_law_fit(ns, ls, ses);
+  const double slope = fit.slope, slope_se = fit.slope_se;
   std::printf("  INFO  life ~ N^%.3f +- %.3f\n", slope, slope_se);
   check.holds("the life grows with N", slope > 3.0 * slope_se,
               "exponent " + ClaimCheck::format(slope) + " +- " + ClaimCheck::format(slope_se));

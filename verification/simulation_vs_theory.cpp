@@ -14,7 +14,15 @@
 //        at K_c / 2, blanes_moan 0.16 at 2-3 K_c, 0.08 at 4 K_c; SF, sigma0 = 1: leap-frog 0.08,
 //        0.04 at 4 K_c) instead of the paper's leap-frog
 //        h = 0.01.
-// Protocol: every K starts from the incoherent state (not the paper's sweep). The theory is a
+//        The sweep (Fig. R_vs_K_theoretical as the paper shows it, issue #17 4f): 17 K/K_c from 0
+//        to 4.5, each continuing from the state the previous one left (the paper's protocol),
+//        the same replicas, per K the pipeline's method; T2 = 1000, T1 = 500 per K at full
+//        scale, T2 = 80, T1 = 40 at CI scale. At full scale its points at K/K_c >= 2 are
+//        checked as the restart-each-K points (below), at the E and P each K's segment
+//        conserves; at CI scale they are reported. Checked at both scales: each replica's
+//        <R>_t rises with every step of K above onset (by > 3 batch-means SEM of the
+//        difference), and each K starts where the previous one ended (not from the floor).
+// Protocol: the four points start each K from the incoherent state. The theory is a
 //   function of the conserved E and P of the start (eq:Hsub0, eq:sigmaSqEq); raising K at a fixed
 //   synchronized state changes E by (K2 - K1) U / K1 < 0, so a swept state has less energy than
 //   the theory's fresh start and sits above the paper's line (measured, N = 2000, T = 120 per K:
@@ -81,6 +89,9 @@ struct Scale {
   double duration, transient, h;
   int replicas;
   bool pipeline_steps;  ///< per K support/pipeline_step.hpp instead of leap-frog with h
+  /// The paper's sweep (continue from the current state), always with the pipeline's steps.
+  std::vector<double> sweep;
+  double sweep_duration, sweep_transient;
 };
 
 struct Panel {
@@ -114,6 +125,10 @@ PointStats point_statistics(const Panel& panel, const PerronResult& perron,
   for (std::size_t k = 0; k < nk; ++k) {
     std::vector<double> gap(B);
     for (std::size_t b = 0; b < B; ++b) {
+      st.mean[k] += sim.points[k].R_mean[b] / static_cast<double>(B);
+      st.sem[k] += sim.points[k].R_sem[b] * sim.points[k].R_sem[b];
+      gap[b] = sim.points[k].R_mean[b];
+      if (p.K[k] == 0.0) continue;  // uncoupled: the theory's R is 0 (no solve at K = 0)
       const double mu0 = verification::incoherent_variance(sim, p.K[k], b, n);
       // mu0 = sigma0^2 - K c0 (self_consistent.hpp); late in a sweep mu0 can reach 0 or below.
       const double c0 = (panel.sigma0 * panel.sigma0 - mu0) / p.K[k];
@@ -121,9 +136,7 @@ PointStats point_statistics(const Panel& panel, const PerronResult& perron,
       const SelfConsistentSolution sol = system.solve(p.K[k]);
       st.converged = st.converged && sol.status != SolveStatus::failed;
       st.theory[k] += sol.R / static_cast<double>(B);
-      gap[b] = sim.points[k].R_mean[b] - sol.R;
-      st.mean[k] += sim.points[k].R_mean[b] / static_cast<double>(B);
-      st.sem[k] += sim.points[k].R_sem[b] * sim.points[k].R_sem[b];
+      gap[b] -= sol.R;
     }
     st.sem[k] = std::sqrt(st.sem[k]) / static_cast<double>(B);
     for (std::size_t b = 0; b < B; ++b) {
@@ -135,7 +148,9 @@ PointStats point_statistics(const Panel& panel, const PerronResult& perron,
     st.se[k] = std::max(st.sem[k], g.sd / std::sqrt(static_cast<double>(B)));
   }
   const SelfConsistentSystem nominal(panel.net, perron.lambda, panel.sigma0, 0.0, perron.u);
-  for (const auto& sol : nominal.sweep(p.K, {})) {
+  const auto first = std::find_if(p.K.begin(), p.K.end(), [](double K) { return K > 0.0; });
+  st.nominal.assign(static_cast<std::size_t>(first - p.K.begin()), 0.0);
+  for (const auto& sol : nominal.sweep(std::vector<double>(first, p.K.end()), {})) {
     st.converged = st.converged && sol.status != SolveStatus::failed;
     st.nominal.push_back(sol.R);
   }
@@ -173,7 +188,7 @@ Halves half_means(const SimulationResult& sim, const SimulationParameters& p, st
 // the direction of the relaxation is checked and the gap reported); 1 < K/K_c < 2: reported;
 // the paper's line (nominal sigma0, U0 = 0) reported beside it.
 void compare_point(ClaimCheck& check, const std::string& name, double x, const PointStats& st,
-                   std::size_t k, double floor, const Halves& halves) {
+                   std::size_t k, double floor, const Halves& halves, bool sweep) {
   const double th = st.theory[k];
   const double tol = 3.0 * st.se[k] + std::sqrt(th * th + floor * floor) - th;
   std::printf(
@@ -184,6 +199,10 @@ void compare_point(ClaimCheck& check, const std::string& name, double x, const P
   if (x >= 2.0 && check.full()) {
     check.within_abs(what + " vs theory at the run's (E, P)", st.mean[k], th, tol,
                      "3 se + finite-size floor in quadrature");
+  } else if (x >= 2.0 && sweep) {
+    // T2 = 80, T1 = 40 per K: halves of 20 time units are too short to show a direction.
+    check.report(what + " vs theory at the run's (E, P), CI scale", st.mean[k], th,
+                 "(checked at full scale; tolerance there: " + ClaimCheck::format(tol) + ")");
   } else if (x >= 2.0) {
     check.report(what + " vs theory at the run's (E, P), CI scale", st.mean[k], th,
                  "(not relaxed by T2 at CI scale; checked at full scale; tolerance there: " +
@@ -209,57 +228,135 @@ void compare_point(ClaimCheck& check, const std::string& name, double x, const P
   }
 }
 
-// Step 3 for one panel: the sweep, the theory per replica, the checks and the figure data.
-void check_panel(ClaimCheck& check, const Panel& panel, const Scale& sc) {
-  const DistributedNetwork d(panel.net);
-  const PerronResult perron = perron_eigenpair(d);
-  const double Kc = critical_coupling(panel.sigma0, panel.net.size(), perron.lambda);
-  const double G = onset_amplitude(perron.lambda, mean_degree(panel.net), perron.u);
+// Above onset each replica's continued state has a larger <R>_t at every step of K. Per replica:
+// the two points are one trajectory's consecutive windows, so their noise is each window's
+// batch-means SEM (the replicas' spread includes where each trajectory happens to be, common to
+// both). Restarted points rise too: check_sweep_continues is what tells a sweep apart.
+void check_sweep_rises(ClaimCheck& check, const std::string& name, const std::vector<double>& x,
+                       const SimulationResult& sim) {
+  bool rises = true;
+  double smallest = INFINITY;  // the smallest increment in units of its se
+  for (std::size_t k = 1; k < x.size(); ++k) {
+    if (x[k - 1] <= 1.0) continue;
+    const PointResult &now = sim.points[k], &before = sim.points[k - 1];
+    for (std::size_t b = 0; b < now.R_mean.size(); ++b) {
+      const double step = now.R_mean[b] - before.R_mean[b];
+      const double ratio = step / std::hypot(now.R_sem[b], before.R_sem[b]);
+      rises = rises && ratio > 3.0;
+      smallest = std::min(smallest, ratio);
+    }
+  }
+  check.holds(name + ": every replica's <R>_t rises with K above onset", rises,
+              "smallest increment " + ClaimCheck::format(smallest) + " se (> 3 required)");
+}
+
+// The paper's protocol: each K starts from the state the previous one left. Above onset a
+// restart would begin at the incoherent floor; a continued state begins where the last one
+// ended. Checked per replica: R at a segment's first record (record_stride steps in) is above
+// the floor plus half of (R at the previous segment's last record - floor).
+void check_sweep_continues(ClaimCheck& check, const std::string& name, const std::vector<double>& x,
+                           const SimulationParameters& p, const SimulationResult& sim,
+                           double floor) {
+  const std::size_t B = p.replicas.size();
+  const TimeSeries& ts = sim.series;
+  bool continues = true;
+  double lowest = INFINITY;  // (first - floor) / (previous last - floor)
+  for (std::size_t i = 1; i < ts.K.size(); ++i) {
+    if (ts.K[i] == ts.K[i - 1]) continue;  // i: the first record of a new segment
+    const auto k =
+        static_cast<std::size_t>(std::find(p.K.begin(), p.K.end(), ts.K[i - 1]) - p.K.begin());
+    if (k >= x.size() || x[k] <= 1.0) continue;
+    for (std::size_t b = 0; b < B; ++b) {
+      const double ratio = (ts.R[i * B + b] - floor) / (ts.R[(i - 1) * B + b] - floor);
+      continues = continues && ratio > 0.5;
+      lowest = std::min(lowest, ratio);
+    }
+  }
+  check.holds(name + ": each K continues from the state the previous one left", continues,
+              "(R at a segment's first record - floor) / (R at the previous one's last - floor) "
+              ">= " +
+                  ClaimCheck::format(lowest) + " (> 0.5 required; a restart gives ~0)");
+}
+
+// One schedule on the panel's network: the restart-each-K points (continue_state = false, the
+// theory's E and P are those of the fresh start) or the paper's sweep (continue_state = true:
+// each K continues from the state the previous one left, header: Protocol).
+SimulationParameters schedule(const Panel& panel, double Kc, const std::vector<double>& x,
+                              const Scale& sc, bool sweep) {
   SimulationParameters p;
   p.h = sc.h;
-  p.duration = sc.duration;
-  p.transient = sc.transient;
-  for (const double k : sc.K_over_Kc) {
+  p.duration = sweep ? sc.sweep_duration : sc.duration;
+  p.transient = sweep ? sc.sweep_transient : sc.transient;
+  const bool per_k_steps = sweep || sc.pipeline_steps;
+  for (const double k : x) {
     p.K.push_back(k * Kc);
-    if (sc.pipeline_steps)
+    if (per_k_steps)
       p.steps.push_back(
-          verification::pipeline_step(k, panel.sigma0, sc.duration, sc.transient, panel.family));
+          verification::pipeline_step(k, panel.sigma0, p.duration, p.transient, panel.family));
   }
   p.replicas.clear();
   for (int b = 0; b < sc.replicas; ++b) {
     p.replicas.push_back({6.0, panel.sigma0, static_cast<std::uint64_t>(100 + b)});
   }
   p.record_stride = 100;
-  // Each K from the incoherent state: the theory's E and P are those of that state.
-  p.continue_state = false;
-  // All K in one pass over the network (replica_lanes.hpp: the same bits); per-K steps need a
-  // pass each.
-  p.K_across_replicas = !sc.pipeline_steps;
-  NetworkForce force(d);
-  const SimulationResult sim = simulate(d, panel.net.degrees(), force, p);
-  verification::account(check, p, sim);
-  std::printf("  INFO  %s: lambda %.2f, K_c %.4g, G %.3f; %.0f s of integration\n",
-              panel.name.c_str(), perron.lambda, Kc, G, sim.integration_seconds);
+  p.continue_state = sweep;
+  // All K in one pass over the network (replica_lanes.hpp: the same bits); per-K steps and the
+  // sweep need a pass each.
+  p.K_across_replicas = !per_k_steps;
+  return p;
+}
 
-  const PointStats st = point_statistics(panel, perron, p, sim);
-  check.holds(panel.name + ": every eq:rSigmaBesselMain solve converged", st.converged,
-              "relative residual <= 1e-10");
-  const double floor = st.mean[0];
-  std::printf("  INFO  %s: finite-size floor <R>_t(K_c/2) = %.4f (1/sqrt(<d>) = %.4f)\n",
-              panel.name.c_str(), floor, 1.0 / std::sqrt(mean_degree(panel.net)));
+// The figure's rows: K/K_c and the columns named in check_panel.
+std::vector<double> point_rows(const std::vector<double>& x, const SimulationParameters& p,
+                               const PointStats& st, double G) {
   std::vector<double> table;
-  for (std::size_t k = 0; k < sc.K_over_Kc.size(); ++k) {
-    const double x = sc.K_over_Kc[k];
-    compare_point(check, panel.name, x, st, k, floor, half_means(sim, p, k));
-    // Figure data: rows K/K_c, columns named below.
-    for (const double v : {x, p.K[k], st.mean[k], st.sem[k], st.sd[k], st.theory[k], st.nominal[k],
-                           onset_order_parameter(G, x)}) {
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    for (const double v : {x[k], p.K[k], st.mean[k], st.sem[k], st.sd[k], st.theory[k],
+                           st.nominal[k], onset_order_parameter(G, x[k])}) {
       table.push_back(v);
     }
   }
-  check.data(panel.name + "_points", table, sc.K_over_Kc.size(),
-             {"K/K_c", "K", "R", "SEM", "replica sd", "theory (E, P)", "theory (sigma0)",
-              "G sqrt(dK/K_c)"});
+  return table;
+}
+
+const std::vector<std::string> kPointColumns{
+    "K/K_c", "K", "R", "SEM", "replica sd", "theory (E, P)", "theory (sigma0)", "G sqrt(dK/K_c)"};
+
+// Step 3 for one panel: the restart-each-K points and the sweep, the theory per replica, the
+// checks and the figure data.
+void check_panel(ClaimCheck& check, const Panel& panel, const Scale& sc) {
+  const DistributedNetwork d(panel.net);
+  const PerronResult perron = perron_eigenpair(d);
+  const double Kc = critical_coupling(panel.sigma0, panel.net.size(), perron.lambda);
+  const double G = onset_amplitude(perron.lambda, mean_degree(panel.net), perron.u);
+  NetworkForce force(d);
+  double floor = NAN;
+  for (const bool sweep : {false, true}) {
+    const std::vector<double>& x = sweep ? sc.sweep : sc.K_over_Kc;
+    const std::string name = panel.name + (sweep ? " sweep" : "");
+    const SimulationParameters p = schedule(panel, Kc, x, sc, sweep);
+    const SimulationResult sim = simulate(d, panel.net.degrees(), force, p);
+    verification::account(check, p, sim);
+    std::printf("  INFO  %s: lambda %.2f, K_c %.4g, G %.3f; %zu K, %.0f s of integration\n",
+                name.c_str(), perron.lambda, Kc, G, x.size(), sim.integration_seconds);
+    const PointStats st = point_statistics(panel, perron, p, sim);
+    check.holds(name + ": every eq:rSigmaBesselMain solve converged", st.converged,
+                "relative residual <= 1e-10");
+    if (!sweep) {
+      floor = st.mean[0];
+      std::printf("  INFO  %s: finite-size floor <R>_t(K_c/2) = %.4f (1/sqrt(<d>) = %.4f)\n",
+                  panel.name.c_str(), floor, 1.0 / std::sqrt(mean_degree(panel.net)));
+    }
+    for (std::size_t k = 0; k < x.size(); ++k) {
+      compare_point(check, name, x[k], st, k, floor, half_means(sim, p, k), sweep);
+    }
+    if (sweep) {
+      check_sweep_rises(check, name, x, sim);
+      check_sweep_continues(check, name, x, p, sim, floor);
+    }
+    check.data(panel.name + (sweep ? "_sweep" : "_points"), point_rows(x, p, st, G), x.size(),
+               kPointColumns);
+  }
   // The theory curve on a fine grid (nominal sigma0, c0 = 0: the paper's solid line).
   std::vector<double> Ks, curve;
   for (int i = 0; i <= 80; ++i) Ks.push_back(Kc * (1.0 + 0.0005 + 3.5 * i / 80.0));
@@ -287,9 +384,14 @@ int main(int argc, char** argv) {
                    "R_vs_K_theoretical)",
                    argc, argv);
   // Step 1: scale.
-  const Scale sc = check.full() ? Scale{10000, {0.5, 2, 3, 4}, 1000.0, 500.0, 0.01, 4, true}
-                                : Scale{2000, {0.5, 2, 3, 4}, 600.0, 300.0, 0.02, 2, false};
-  if (sc.pipeline_steps) check.note("steps", verification::pipeline_step_note());
+  // The sweep: 17 K from 0 to 4.5 K_c (Fig. R_vs_K_theoretical's range), denser near onset.
+  const std::vector<double> sweep{0,   0.3, 0.6, 0.9, 1.1, 1.3, 1.5, 1.8, 2.1,
+                                  2.4, 2.7, 3.0, 3.3, 3.6, 3.9, 4.2, 4.5};
+  const Scale sc =
+      check.full()
+          ? Scale{10000, {0.5, 2, 3, 4}, 1000.0, 500.0, 0.01, 4, true, sweep, 1000.0, 500.0}
+          : Scale{2000, {0.5, 2, 3, 4}, 600.0, 300.0, 0.02, 2, false, sweep, 80.0, 40.0};
+  check.note("steps", verification::pipeline_step_note());
   check.note("alpha", "panel (b): alpha = 2.8 (Table II), caption says 2.5 with d_min = 33");
   // Step 2: the two networks, ||d|| = 100.
   const double q = erdos_renyi_probability(sc.n, 100.0);

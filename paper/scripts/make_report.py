@@ -85,6 +85,12 @@ SECTIONS = [
      "Not a claim of the paper: Yamaguchi, Barre, Bouchet, Dauxois & Ruffo (Physica A 337, 2004) "
      "find that the homogeneous water-bag at U = 0.69 stays quasi-stationary for a time ~ N^1.7 "
      "before relaxing to the synchronised equilibrium.", ["qss_lifetime"], ["qss_lifetime"]),
+    ("Beyond the paper: the near-onset gap, a lag or the stationary state?",
+     "Our open question, not the paper's: near K_c the simulation sits below eq:rSigmaBesselMain "
+     "at the paper's T. Gaussian momenta at 1.1, 1.2 and 1.5 K_c on the complete graph and on ER "
+     "(degree 100) for three N or more, to 2x (CI) or 10x (full) the paper's T: does the gap "
+     "close with time, and how does the time it takes grow with N and the degree?",
+     ["near_onset_gap"], ["near_onset_gap"]),
     ("Conservation laws",
      "H and the total momentum are conserved (eq:hamiltonianNetworkCase); the symplectic "
      "leap-frog's energy error stays bounded.", ["conservation"], []),

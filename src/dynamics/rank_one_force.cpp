@@ -62,6 +62,7 @@ void RankOneForce::prepare(const RotorState& state, std::vector<double>& g, Forc
   const auto cells =
       static_cast<std::size_t>(state.rows) * static_cast<std::size_t>(state.replicas);
   const auto w = static_cast<std::size_t>(state.replicas);
+  m_cs.resize(2 * cells);
   m_a_cs.resize(2 * cells);
   m_z.resize(2 * w);
   m_z_sums.prepare(static_cast<std::size_t>(state.rows), 2 * state.replicas);
@@ -84,8 +85,11 @@ void RankOneForce::evaluate(const RotorState& state, std::vector<double>& g, For
   for (std::size_t r = 0; r < rows; ++r) {
     const double a = m_structure.a[static_cast<std::size_t>(m_first_row) + r];
     for (std::size_t b = 0; b < w; ++b) {
-      m_a_cs[(r * w + b) * 2] = a * std::cos(state.theta[r * w + b]);
-      m_a_cs[(r * w + b) * 2 + 1] = a * std::sin(state.theta[r * w + b]);
+      const std::size_t k = r * w + b;
+      m_cs[2 * k] = std::cos(state.theta[k]);
+      m_cs[2 * k + 1] = std::sin(state.theta[k]);
+      m_a_cs[2 * k] = a * m_cs[2 * k];
+      m_a_cs[2 * k + 1] = a * m_cs[2 * k + 1];
     }
   }
   m_z_sums.sum(m_a_cs.data(), m_z.data());
@@ -96,7 +100,7 @@ void RankOneForce::evaluate(const RotorState& state, std::vector<double>& g, For
     const double a = m_structure.a[static_cast<std::size_t>(m_first_row) + r];
     for (std::size_t b = 0; b < w; ++b) {
       const std::size_t k = r * w + b;
-      const double c = std::cos(state.theta[k]), s = std::sin(state.theta[k]);
+      const double c = m_cs[2 * k], s = m_cs[2 * k + 1];  // the first loop's, after its barrier
       double yc = a * m_z[2 * b], ys = a * m_z[2 * b + 1];
       if (!m_structure.diagonal) {
         yc -= a * a * c;

@@ -40,6 +40,7 @@ class RankOneForce : public CouplingForce {
   NodeIndex m_first_row;
   NodeIndex m_rows;
   double m_inverse_n;
+  std::vector<double> m_cs;    // rows x replicas x [cos, sin]: once per evaluation
   std::vector<double> m_a_cs;  // rows x replicas x [a cos, a sin]
   std::vector<double> m_z;     // replicas x [Re Z, Im Z]
   OrderedColumnSums m_z_sums;
