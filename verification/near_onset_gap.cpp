@@ -57,23 +57,16 @@
 #include <utility>
 #include <vector>
 
-#include "dynamics/network_force.hpp"
-#include "dynamics/rank_one_force.hpp"
 #include "dynamics/simulation.hpp"
-#include "network/complete_graph.hpp"
-#include "network/degree_statistics.hpp"
 #include "network/erdos_renyi.hpp"
-#include "parallel/distributed_network.hpp"
 #include "parallel/parallel_session.hpp"
-#include "spectral/perron.hpp"
 #include "support/claim_check.hpp"
+#include "support/network_scene.hpp"
 #include "support/passage_time.hpp"
 #include "support/pipeline_step.hpp"
-#include "support/run_variance.hpp"
 #include "support/sample_statistics.hpp"
 #include "support/work_account.hpp"
 #include "theory/critical_coupling.hpp"
-#include "theory/self_consistent.hpp"
 
 using namespace hmfnet;
 using verification::ClaimCheck;
@@ -93,51 +86,19 @@ struct Scale {
   int replicas;
 };
 
-// One network with what the simulation and the theory need of it.
-struct Scene {
-  bool complete = false;
-  NodeIndex n = 0;
-  double degree = 0.0;  ///< mean degree
+// One network of the study, with its linear threshold at sigma0^2 = 0.12.
+struct Scene : verification::NetworkScene {
   double Kc = 0.0;
-  Network theory_net;  ///< ER itself, or K_N's one-node quotient
-  double theory_lambda = 0.0;
-  std::vector<double> perron;
-  std::vector<double> degrees;
-  std::unique_ptr<DistributedNetwork> rows;
-  std::unique_ptr<CouplingForce> force;
   std::string name() const {
     return (complete ? "K_N" : "ER") + std::string(" N = ") + std::to_string(n);
   }
 };
 
 std::unique_ptr<Scene> make_scene(bool complete, NodeIndex n) {
-  auto s = std::make_unique<Scene>();
-  s->complete = complete;
-  s->n = n;
-  const double sigma0 = std::sqrt(kSigma0Sq);
-  if (complete) {
-    const CompleteGraph graph = CompleteGraph::make(n, false);
-    s->theory_net = graph.quotient();
-    s->theory_lambda = s->theory_net.weights().front();  // a 1 x 1 matrix: its one entry
-    s->perron = {1.0};
-    s->degree = graph.degree();
-    s->degrees.assign(static_cast<std::size_t>(n), graph.degree());
-    s->Kc = critical_coupling(sigma0, static_cast<double>(n), graph.lambda());
-    s->rows = std::make_unique<DistributedNetwork>(graph);
-    s->force = std::make_unique<RankOneForce>(
-        RankOneStructure{std::vector<double>(static_cast<std::size_t>(n), 1.0), false},
-        s->rows->first_row(), s->rows->local_size());
-    return s;
-  }
-  s->theory_net = erdos_renyi({n, erdos_renyi_probability(n, 100.0), 1});
-  s->rows = std::make_unique<DistributedNetwork>(s->theory_net);
-  const PerronResult perron = perron_eigenpair(*s->rows);
-  s->theory_lambda = perron.lambda;
-  s->perron = perron.u;
-  s->degree = mean_degree(s->theory_net);
-  s->degrees = s->theory_net.degrees();
-  s->Kc = critical_coupling(sigma0, static_cast<double>(n), perron.lambda);
-  s->force = std::make_unique<NetworkForce>(*s->rows);
+  std::unique_ptr<Scene> s = complete ? verification::complete_scene<Scene>(n)
+                                      : verification::stored_scene<Scene>(
+                                            erdos_renyi({n, erdos_renyi_probability(n, 100.0), 1}));
+  s->Kc = critical_coupling(std::sqrt(kSigma0Sq), static_cast<double>(n), s->lambda);
   return s;
 }
 
@@ -170,16 +131,6 @@ std::pair<std::size_t, std::size_t> segment(const SimulationResult& sim, double 
   return {first, last};
 }
 
-// eq:rSigmaBesselMain at replica b's own conserved E and P (simulation_vs_theory.cpp).
-SelfConsistentSolution theory_at_run(const Scene& scene, const SimulationResult& sim, double K,
-                                     std::size_t b) {
-  const double mu0 = verification::incoherent_variance(sim, K, b, static_cast<double>(scene.n));
-  const double c0 = (kSigma0Sq - mu0) / K;  // mu0 = sigma0^2 - K c0 (self_consistent.hpp)
-  const SelfConsistentSystem system(scene.theory_net, scene.theory_lambda, std::sqrt(kSigma0Sq), c0,
-                                    scene.perron);
-  return system.solve(K);
-}
-
 // One K's records within the run: replicas B, record spacing dt, [first, last) of the series.
 struct SegmentView {
   std::size_t B = 0, first = 0, last = 0;
@@ -207,7 +158,8 @@ void window_gaps(Outcome& o, const Scene& scene, const SegmentView& v,
   const std::size_t p0 = v.index(kPaperT1), p1 = v.index(kPaperT2);
   const std::size_t l0 = v.index(0.8 * p.duration);
   for (std::size_t b = 0; b < v.B; ++b) {
-    const SelfConsistentSolution sol = theory_at_run(scene, sim, K, b);
+    const SelfConsistentSolution sol =
+        verification::theory_at_run(scene, sim, K, b, std::sqrt(kSigma0Sq));
     o.converged = o.converged && sol.status != SolveStatus::failed;
     const std::vector<double> R =
         verification::replica_mean(v.series(sim.series.R), {static_cast<int>(b)});

@@ -37,6 +37,7 @@
 #include "parallel/parallel_session.hpp"
 #include "support/claim_check.hpp"
 #include "support/passage_time.hpp"
+#include "support/qss_start.hpp"
 #include "support/work_account.hpp"
 #include "theory/all_to_all.hpp"
 
@@ -45,10 +46,9 @@ using verification::ClaimCheck;
 
 namespace {
 
-constexpr double kU = 0.69;
-constexpr int kReplicas = 16;
-constexpr double kSmooth = 50.0;  // running-mean width and initial window, time units
-constexpr int kBootstrap = 200;
+using verification::qss::kBootstrap;
+using verification::qss::kReplicas;
+using verification::qss::kSmooth;
 
 struct Life {
   NodeIndex n = 0;
@@ -69,7 +69,7 @@ Life measure(ClaimCheck& check, NodeIndex n) {
   p.K = {1.0};
   p.record_stride = 10;
   p.replicas.clear();
-  const double sigma0 = std::sqrt(2.0 * kU - 1.0);
+  const double sigma0 = verification::qss::sigma0();
   for (int b = 0; b < kReplicas; ++b) {
     p.replicas.push_back({0.0, sigma0, static_cast<std::uint64_t>(7000 + 100 * n + b),
                           MomentumDistribution::waterbag});

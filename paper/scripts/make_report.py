@@ -91,6 +91,11 @@ SECTIONS = [
      "(degree 100) for three N or more, to 2x (CI) or 10x (full) the paper's T: does the gap "
      "close with time, and how does the time it takes grow with N and the degree?",
      ["near_onset_gap"], ["near_onset_gap"]),
+    ("Beyond the paper: the quasi-stationary state on networks",
+     "No paper has this figure: the same water-bag start (K lambda / N = 1, sigma0^2 = 0.38) on "
+     "random regular graphs (every degree d), ER and the complete graph. Does the QSS life follow "
+     "the size N, or the number d of neighbours each rotor's field sums? Does the degree spread "
+     "(ER against random regular) matter?", ["qss_networks"], ["qss_networks"]),
     ("Conservation laws",
      "H and the total momentum are conserved (eq:hamiltonianNetworkCase); the symplectic "
      "leap-frog's energy error stays bounded.", ["conservation"], []),

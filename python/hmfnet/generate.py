@@ -20,6 +20,11 @@ def sbm(half, *, p_in, p_out, seed):
     return _hmfnet._generate_sbm(_tokens(half=half, p_in=p_in, p_out=p_out, seed=seed))
 
 
+def regular(n, *, degree, seed):
+    """Random d-regular graph: every node has exactly `degree` neighbours (pairing model)."""
+    return _hmfnet._generate_regular(_tokens(n=n, degree=degree, seed=seed))
+
+
 def complete(n, *, self_loops=False):
     """The complete graph K_N, held in O(1) space."""
     return _hmfnet.Network.complete(n, self_loops)

@@ -31,7 +31,8 @@ void add_generate_options(CLI::App& app, GenerateFlags& flags, const GenerateRun
   auto& complete = flags.complete;
   const auto& run_er = runs.er;
   const auto& run_sf = runs.sf;
-  auto* gen = app.add_subcommand("generate", "Generate a network (er | sf | sbm | complete)");
+  auto* gen =
+      app.add_subcommand("generate", "Generate a network (er | sf | sbm | complete | regular)");
   gen->require_subcommand(1);
 
   auto* e = gen->add_subcommand("er", "Erdos-Renyi G(N, q): each pair linked with probability q");
@@ -100,6 +101,18 @@ void add_generate_options(CLI::App& app, GenerateFlags& flags, const GenerateRun
   c->add_flag("--self-loops", complete.self_loops, "Also A_nn = 1 (A = 1 1^T, lambda = N)");
   c->add_option("-o,--output", complete.output, "Output file (.h5)")->required();
   c->callback(runs.complete);
+
+  auto& regular = flags.regular;
+  auto* r = gen->add_subcommand(
+      "regular", "Random d-regular graph: every node has exactly d neighbours (pairing model)");
+  r->add_option("--n", regular.n, "Number of nodes")->required()->check(CLI::Range(1, 2147483647));
+  r->add_option("--degree", regular.degree, "Degree d of every node (0 <= d <= n - 1, n d even)")
+      ->required()
+      ->check(CLI::Range(0, 2147483646));
+  r->add_option("--seed", regular.seed, "Random seed")->required()->check(k_seed);
+  r->add_option("-o,--output", regular.output, "Output file (.mtx, .h5 or edge list .txt)")
+      ->required();
+  r->callback(runs.regular);
 }
 
 void add_rewire_options(CLI::App& app, RewireFlags& f, const Run& run) {

@@ -50,6 +50,13 @@ struct SbmFlags {
   std::string output;
 };
 
+struct RegularFlags {
+  int n = 0;
+  int degree = 0;
+  std::uint64_t seed = 0;
+  std::string output;
+};
+
 struct RewireFlags {
   std::string input;
   double target_rho = 0.0;
@@ -123,9 +130,10 @@ struct GenerateFlags {
   SfFlags sf;
   SbmFlags sbm;
   CompleteFlags complete;
+  RegularFlags regular;
 };
 struct GenerateRuns {
-  Run er, sf, sbm, complete;
+  Run er, sf, sbm, complete, regular;
 };
 void add_generate_options(CLI::App& app, GenerateFlags& flags, const GenerateRuns& runs);
 void add_rewire_options(CLI::App& app, RewireFlags& f, const Run& run);

@@ -48,8 +48,8 @@ struct SimulateReport {
 SimulateReport simulate_report(const SimulateFlags& f, const DistributedInput& input,
                                const SimulateHooks& hooks = {});
 
-/// The network `generate er|sf|sbm` writes, whole on this rank (as the text formats write it),
-/// with the provenance record the file would carry.
+/// The network `generate er|sf|sbm|regular` writes, whole on this rank (as the text formats write
+/// it), with the provenance record the file would carry.
 struct GeneratedNetwork {
   Network network;
   std::string provenance;
@@ -57,5 +57,6 @@ struct GeneratedNetwork {
 GeneratedNetwork generated_network(const ErFlags& f);
 GeneratedNetwork generated_network(const SfFlags& f);
 GeneratedNetwork generated_network(const SbmFlags& f);
+GeneratedNetwork generated_network(const RegularFlags& f);
 
 }  // namespace hmfnet::cli

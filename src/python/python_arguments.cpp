@@ -46,7 +46,7 @@ void parse_generator(Flags cli::GenerateFlags::*member, const std::string& name,
   all.insert(all.end(), {"--output", "python.h5"});
   parse(
       [&](CLI::App& app) {
-        add_generate_options(app, flags, {k_no_work, k_no_work, k_no_work, k_no_work});
+        add_generate_options(app, flags, {k_no_work, k_no_work, k_no_work, k_no_work, k_no_work});
       },
       all);
   f = flags.*member;
@@ -82,6 +82,10 @@ void parse_generate_arguments(cli::SfFlags& f, const std::vector<std::string>& t
 
 void parse_generate_arguments(cli::SbmFlags& f, const std::vector<std::string>& tokens) {
   parse_generator(&cli::GenerateFlags::sbm, "sbm", f, tokens);
+}
+
+void parse_generate_arguments(cli::RegularFlags& f, const std::vector<std::string>& tokens) {
+  parse_generator(&cli::GenerateFlags::regular, "regular", f, tokens);
 }
 
 void parse_read_arguments(cli::ReadFlags& f, const std::vector<std::string>& tokens) {

@@ -18,11 +18,12 @@ void parse_arguments(cli::TheoryFlags& f, const std::string& input,
                      const std::vector<std::string>& tokens);
 void parse_arguments(cli::SimulateFlags& f, const std::string& input,
                      const std::vector<std::string>& tokens);
-/// `generate er|sf|sbm` (the grammar's required --output is given a placeholder: nothing is
+/// `generate er|sf|sbm|regular` (the grammar's required --output is given a placeholder: nothing is
 /// written).
 void parse_generate_arguments(cli::ErFlags& f, const std::vector<std::string>& tokens);
 void parse_generate_arguments(cli::SfFlags& f, const std::vector<std::string>& tokens);
 void parse_generate_arguments(cli::SbmFlags& f, const std::vector<std::string>& tokens);
+void parse_generate_arguments(cli::RegularFlags& f, const std::vector<std::string>& tokens);
 /// The read options every network-reading command shares (--symmetrize, --index-base, --nodes).
 void parse_read_arguments(cli::ReadFlags& f, const std::vector<std::string>& tokens);
 

@@ -172,6 +172,8 @@ void bind_network(py::module_& m) {
   m.def("_generate_er", &generated<cli::ErFlags>, py::arg("args"), py::arg("name") = "er");
   m.def("_generate_sf", &generated<cli::SfFlags>, py::arg("args"), py::arg("name") = "sf");
   m.def("_generate_sbm", &generated<cli::SbmFlags>, py::arg("args"), py::arg("name") = "sbm");
+  m.def("_generate_regular", &generated<cli::RegularFlags>, py::arg("args"),
+        py::arg("name") = "regular");
 }
 
 }  // namespace hmfnet::python

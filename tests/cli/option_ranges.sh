@@ -28,6 +28,7 @@ declare -A base=(
   ["generate sf"]="--n 100 --alpha 2.5 --dmin 3 --seed 1 --output $out/sf.mtx"
   ["generate sbm"]="--half 30 --p-in 0.2 --p-out 0.05 --seed 1 --output $out/sbm.mtx"
   ["generate complete"]="--n 50 --output $out/k.h5"
+  ["generate regular"]="--n 51 --degree 4 --seed 1 --output $out/rr.mtx"
   ["rewire"]="input $net --target-rho 1.1 --seed 1 --output $out/rewired.mtx"
   ["convert"]="input $net --output $out/converted.h5"
   ["spectrum"]="input $net"

@@ -74,6 +74,12 @@ inline void check_sbm(const cli::SbmFlags& f, const std::string& line) {
   c.require(f.p_out >= 0.0 && f.p_out <= 1.0, "--p-out not a probability");
 }
 
+inline void check_regular(const cli::RegularFlags& f, const std::string& line) {
+  const RangeChecks c(line);
+  c.require(f.n >= 1, "--n < 1");
+  c.require(f.degree >= 0, "--degree < 0");
+}
+
 inline void check_simulate(const cli::SimulateFlags& f, const std::string& line) {
   const RangeChecks c(line);
   c.positive(f.sigma0, "--sigma0 not > 0");
@@ -125,7 +131,8 @@ inline bool parse_command_line(std::vector<std::string> args) {
                             {[&] { check_er(generate.er, line), reached = true; },
                              [&] { check_sf(generate.sf, line), reached = true; },
                              [&] { check_sbm(generate.sbm, line), reached = true; },
-                             [&] { check_complete(generate.complete, line), reached = true; }});
+                             [&] { check_complete(generate.complete, line), reached = true; },
+                             [&] { check_regular(generate.regular, line), reached = true; }});
   cli::add_rewire_options(app, rewire, [&] {
     const RangeChecks c(line);
     c.positive(rewire.target_rho, "--target-rho not > 0");
@@ -194,7 +201,7 @@ inline const std::vector<std::string>& argument_tokens() {
       "", "-", "true", "x",
       // appended (token-mode seeds index the entries above)
       "--precision", "float32", "float64", "--K-across-replicas", "--momenta", "gaussian",
-      "waterbag", "--order", "rcm", "degree", "original"};
+      "waterbag", "--order", "rcm", "degree", "original", "regular", "--degree"};
   return tokens;
 }
 

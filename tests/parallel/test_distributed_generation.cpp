@@ -10,6 +10,7 @@
 #include "io/network_hdf5.hpp"
 #include "network/chung_lu.hpp"
 #include "network/erdos_renyi.hpp"
+#include "network/random_regular.hpp"
 #include "network/stochastic_block.hpp"
 #include "parallel/distributed_generation.hpp"
 #include "parallel/distributed_network_file.hpp"
@@ -41,13 +42,14 @@ void check_block(const RowBlock& block, const Network& net) {
 
 }  // namespace
 
-TEST_CASE("Each rank generates exactly its rows of the serial network (ER, Chung-Lu, SBM)",
+TEST_CASE("Each rank generates exactly its rows of the serial network (ER, Chung-Lu, SBM, regular)",
           "[distributed][generation]") {
   const auto er = erdos_renyi_source({2000, 0.02, 21});
   const PowerLaw law{2.5, power_law_d_min_for_mean(2.5, 15.0)};
   const auto sf = chung_lu_source(power_law_targets(3000, law, 22), LinkProbability::capped, 22);
   const auto sbm = two_block_sbm_source({300, 0.08, 0.01, 23});
-  for (const EdgeSource* source : {er.get(), sf.get(), sbm.get()}) {
+  const auto regular = random_regular_source({1000, 12, 24});  // one global pairing per rank
+  for (const EdgeSource* source : {er.get(), sf.get(), sbm.get(), regular.get()}) {
     const Network net = network_from_source(*source);
     // A chunk of 257 edges: many rounds, so ranks with fewer rounds take part with empty sends.
     check_block(generate_distributed(*source, 257), net);

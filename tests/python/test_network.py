@@ -95,6 +95,8 @@ def test_generators_equal_the_cli(tmp_path, run_cli):
          lambda: hmfnet.generate.sf(300, alpha=2.5, dmin=3, seed=4)),
         (["sbm", "--half", 100, "--p-in", 0.1, "--p-out", 0.01, "--seed", 4],
          lambda: hmfnet.generate.sbm(100, p_in=0.1, p_out=0.01, seed=4)),
+        (["regular", "--n", 300, "--degree", 6, "--seed", 4],
+         lambda: hmfnet.generate.regular(300, degree=6, seed=4)),
     ]
     for args, make in cases:
         path = tmp_path / f"{args[0]}.mtx"
@@ -109,6 +111,8 @@ def test_generator_and_complete_graph_errors():
         hmfnet.generate.er(10, seed=1)
     with pytest.raises(ValueError, match="--n"):
         hmfnet.generate.complete(1)
+    with pytest.raises(ValueError, match="n d even"):
+        hmfnet.generate.regular(11, degree=3, seed=1)
     with pytest.raises(ValueError, match="--seed"):
         hmfnet.generate.er(10, q=0.5, seed=-1)
 

@@ -70,6 +70,7 @@ TEST_CASE("power_law_fit recovers an exponent and skips unusable points", "[pass
   }
   PowerLaw fit = power_law_fit(x, y, se);
   CHECK(std::abs(fit.slope - 1.7) < 1e-12);
+  CHECK(std::abs(fit.at(300.0) / (3.0 * std::pow(300.0, 1.7)) - 1.0) < 1e-12);
   // sigma(ln y) = 0.1 everywhere: the slope's se is 0.1 / sqrt(sum (ln x - mean)^2).
   double mean = 0.0, ss = 0.0;
   for (const double n : x) mean += std::log(n) / 4.0;

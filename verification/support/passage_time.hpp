@@ -97,6 +97,8 @@ inline Passage bootstrap_passage(const ReplicaSeries& s,
 /// finite y or a positive se are left out. NaN slope with fewer than two points.
 struct PowerLaw {
   double slope = NAN, slope_se = NAN;
+  double log_prefactor = NAN;  ///< ln y = log_prefactor + slope ln x
+  double at(double x) const { return std::exp(log_prefactor + slope * std::log(x)); }
 };
 
 inline PowerLaw power_law_fit(const std::vector<double>& x, const std::vector<double>& y,
@@ -113,7 +115,8 @@ inline PowerLaw power_law_fit(const std::vector<double>& x, const std::vector<do
   }
   const double det = sw * sxx - sx * sx;
   if (!(det > 0.0)) return {};
-  return {(sw * sxy - sx * sy) / det, std::sqrt(sw / det)};
+  const double slope = (sw * sxy - sx * sy) / det;
+  return {slope, std::sqrt(sw / det), (sy - slope * sx) / sw};
 }
 
 }  // namespace hmfnet::verification
