@@ -92,8 +92,7 @@ struct Deviation {
 SimulationResult run_all(ClaimCheck& check, NodeIndex n, const Scale& s) {
   const CompleteGraph graph = CompleteGraph::make(n, true);
   const DistributedNetwork d(graph);
-  RankOneForce force({std::vector<double>(static_cast<std::size_t>(n), 1.0), true}, d.first_row(),
-                     d.local_size());
+  RankOneForce force(complete_graph_structure(graph), d.first_row(), d.local_size());
   SimulationParameters p;
   p.h = 0.1;
   p.duration = s.segment;

@@ -60,8 +60,7 @@ struct Life {
 Life measure(ClaimCheck& check, NodeIndex n) {
   const CompleteGraph graph = CompleteGraph::make(n, true);
   const DistributedNetwork d(graph);
-  RankOneForce force({std::vector<double>(static_cast<std::size_t>(n), 1.0), true}, d.first_row(),
-                     d.local_size());
+  RankOneForce force(complete_graph_structure(graph), d.first_row(), d.local_size());
   SimulationParameters p;
   p.h = 0.1;
   p.duration = std::ceil(0.6 * std::pow(static_cast<double>(n), 1.7) / 100.0) * 100.0;

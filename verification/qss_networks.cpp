@@ -341,7 +341,9 @@ int main(int argc, char** argv) {
     check.report(at_n + ": exponent of the life against d", d_fit.slope, complete_n.slope,
                  "+- " + ClaimCheck::format(d_fit.slope_se) + d_range +
                      "; reference: K_N's exponent against N = d + 1");
-    check_outlives(check, at_n, *by_d.back(), life_at(complete, plan.sweep_n));
+    const Life* densest = *std::max_element(
+        by_d.begin(), by_d.end(), [](const Life* a, const Life* b) { return a->d < b->d; });
+    check_outlives(check, at_n, *densest, life_at(complete, plan.sweep_n));
     exponents.insert(exponents.end(), {n_fit.slope, n_fit.slope_se, d_fit.slope, d_fit.slope_se});
     for (const Life* l : by_d) {
       const double law = complete_n.at(l->degree + 1.0);

@@ -51,16 +51,12 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/network_force.hpp"
-#include "dynamics/rank_one_force.hpp"
 #include "dynamics/simulation.hpp"
-#include "network/complete_graph.hpp"
 #include "network/erdos_renyi.hpp"
-#include "parallel/distributed_network.hpp"
 #include "parallel/parallel_session.hpp"
-#include "spectral/perron.hpp"
 #include "support/claim_check.hpp"
 #include "support/growth_fit.hpp"
+#include "support/network_scene.hpp"
 #include "support/sample_statistics.hpp"
 #include "support/work_account.hpp"
 #include "theory/critical_coupling.hpp"
@@ -75,43 +71,21 @@ constexpr double kSigma0 = 0.35;
 constexpr double kOmega = 6.0;
 constexpr int kGrowthReplicas = 3;
 
-// A network with what the simulation needs: the row layout, a force, degrees and lambda.
-struct Graph {
+// A network with its rows, force, degrees and lambda (support/network_scene.hpp), and a name.
+struct Graph : verification::NetworkScene {
   std::string name;
-  NodeIndex n = 0;
-  double lambda = 0.0;
-  std::unique_ptr<Network> stored;  // null for K_N
-  std::unique_ptr<DistributedNetwork> rows;
-
-  std::unique_ptr<CouplingForce> force() const {
-    if (stored) return std::make_unique<NetworkForce>(*rows);
-    return std::make_unique<RankOneForce>(
-        RankOneStructure{std::vector<double>(static_cast<std::size_t>(n), 1.0), false},
-        rows->first_row(), rows->local_size());
-  }
-  std::vector<double> degrees() const {
-    return stored ? stored->degrees()
-                  : std::vector<double>(static_cast<std::size_t>(n), static_cast<double>(n - 1));
-  }
 };
 
-Graph complete_graph(NodeIndex n) {
-  Graph g;
-  const CompleteGraph k = CompleteGraph::make(n, false);
-  g.name = "K_" + std::to_string(n);
-  g.n = n;
-  g.lambda = k.lambda();
-  g.rows = std::make_unique<DistributedNetwork>(k);
+std::unique_ptr<Graph> complete_graph(NodeIndex n) {
+  auto g = verification::complete_scene<Graph>(n);
+  g->name = "K_" + std::to_string(n);
   return g;
 }
 
-Graph er_graph(NodeIndex n, double degree) {
-  Graph g;
-  g.name = "ER N = " + std::to_string(n) + ", d = " + ClaimCheck::format(degree);
-  g.n = n;
-  g.stored = std::make_unique<Network>(erdos_renyi({n, erdos_renyi_probability(n, degree), 1}));
-  g.rows = std::make_unique<DistributedNetwork>(*g.stored);
-  g.lambda = perron_eigenpair(*g.rows).lambda;
+std::unique_ptr<Graph> er_graph(NodeIndex n, double degree) {
+  auto g =
+      verification::stored_scene<Graph>(erdos_renyi({n, erdos_renyi_probability(n, degree), 1}));
+  g->name = "ER N = " + std::to_string(n) + ", d = " + ClaimCheck::format(degree);
   return g;
 }
 
@@ -128,8 +102,7 @@ SimulationResult run(ClaimCheck& check, const Graph& g, MomentumDistribution mom
   for (int b = 0; b < replicas; ++b) {
     p.replicas.push_back({kOmega, kSigma0, static_cast<std::uint64_t>(21 + b), momenta});
   }
-  const auto force = g.force();
-  const SimulationResult r = simulate(*g.rows, g.degrees(), *force, p);
+  const SimulationResult r = simulate(*g.rows, g.degrees, *g.force, p);
   verification::account(check, p, r);
   return r;
 }
@@ -208,10 +181,10 @@ void threshold(ClaimCheck& check, const Graph& small, const Graph& large, const 
     const std::string what =
         "late R ratio, water-bag at " + ClaimCheck::format(kappa) + " K_c^wb" + on;
     table.insert(table.end(),
-                 {small.stored ? 1.0 : 0.0, kappa, 0.0, q.small, q.large, q.value, q.se});
+                 {small.complete ? 0.0 : 1.0, kappa, 0.0, q.small, q.large, q.value, q.se});
     if (kappa > 1.0) {
       unstable(what, q);
-    } else if (small.stored) {
+    } else if (!small.complete) {
       // Found, not yet explained (README, issue #17 d): on ER the water-bag below K_c^wb leaves
       // its floor within tens of time units, which K_N at the same kappa does not.
       check.report(what, q.value, 0.5,
@@ -230,7 +203,8 @@ void threshold(ClaimCheck& check, const Graph& small, const Graph& large, const 
   std::printf("  INFO  Gaussian at 0.8 K_c^wb = 2.4 K_c%s: late R %.4f, %.4f\n", on.c_str(),
               q.small, q.large);
   unstable("late R ratio, Gaussian at 0.8 K_c^wb = 2.4 K_c" + on, q);
-  table.insert(table.end(), {small.stored ? 1.0 : 0.0, 0.8, 1.0, q.small, q.large, q.value, q.se});
+  table.insert(table.end(),
+               {small.complete ? 0.0 : 1.0, 0.8, 1.0, q.small, q.large, q.value, q.se});
 }
 
 // Step B: growth rates on one network.
@@ -279,7 +253,7 @@ void growth(ClaimCheck& check, const Graph& g, std::vector<double>& table) {
     }
     check.report(tag + ": fitted slope vs sqrt(K lambda / 2N - D^2)", ms.mean, gamma,
                  "N -> infinity closed form; the samples' D differs by O(N^-1/2)");
-    table.insert(table.end(), {g.stored ? 1.0 : 0.0, kappa, gamma, reference, ms.mean, sem});
+    table.insert(table.end(), {g.complete ? 0.0 : 1.0, kappa, gamma, reference, ms.mean, sem});
   }
 }
 
@@ -294,10 +268,10 @@ int main(int argc, char** argv) {
   const bool full = check.full();
   std::vector<double> thresholds, rates;
   const NodeIndex n_k = full ? 100000 : 10000;
-  threshold(check, complete_graph(n_k), complete_graph(4 * n_k), {8, 60.0, 1}, thresholds);
+  threshold(check, *complete_graph(n_k), *complete_graph(4 * n_k), {8, 60.0, 1}, thresholds);
   const NodeIndex n_er = full ? 10000 : 2000;
-  threshold(check, er_graph(n_er, 100.0), er_graph(n_er, 400.0), {4, 40.0, 10}, thresholds);
-  growth(check, complete_graph(full ? 1000000 : 100000), rates);
+  threshold(check, *er_graph(n_er, 100.0), *er_graph(n_er, 400.0), {4, 40.0, 10}, thresholds);
+  growth(check, *complete_graph(full ? 1000000 : 100000), rates);
   check.data("threshold", thresholds, thresholds.size() / 7,
              {"ER", "K/K_c^wb", "gaussian", "late R small", "late R large", "ratio", "ratio se"});
   check.data("growth", rates, rates.size() / 6,

@@ -72,10 +72,7 @@ std::unique_ptr<CouplingForce> complete_graph_force(const SimulateFlags& f,
     throw ParameterError("--precision", "float32 on the complete graph stored implicitly",
                          "float64 (its rank-one force)");
   }
-  RankOneStructure structure;
-  structure.a.assign(static_cast<std::size_t>(graph.n), 1.0);
-  structure.diagonal = graph.self_loops;
-  return std::make_unique<RankOneForce>(std::move(structure), distributed.first_row(),
+  return std::make_unique<RankOneForce>(complete_graph_structure(graph), distributed.first_row(),
                                         distributed.local_size());
 }
 

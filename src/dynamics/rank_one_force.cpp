@@ -16,6 +16,10 @@ bool close(double x, double y) {
 
 }  // namespace
 
+RankOneStructure complete_graph_structure(const CompleteGraph& graph) {
+  return {std::vector<double>(static_cast<std::size_t>(graph.n), 1.0), graph.self_loops};
+}
+
 std::optional<RankOneStructure> detect_rank_one(const DistributedNetwork& net) {
   const NodeIndex n = net.global_size();
   if (n < 3 || !net.stores_rows()) return std::nullopt;
@@ -63,12 +67,11 @@ void RankOneForce::prepare(const RotorState& state, std::vector<double>& g, Forc
       static_cast<std::size_t>(state.rows) * static_cast<std::size_t>(state.replicas);
   const auto w = static_cast<std::size_t>(state.replicas);
   m_cs.resize(2 * cells);
-  m_a_cs.resize(2 * cells);
+  m_scratch.resize(2 * cells);
   m_z.resize(2 * w);
   m_z_sums.prepare(static_cast<std::size_t>(state.rows), 2 * state.replicas);
   g.resize(cells);
   m_y.resize(2 * cells);
-  m_terms.resize(2 * cells);
   m_term_sums.resize(2 * w);
   m_sums.prepare(static_cast<std::size_t>(state.rows), 2 * state.replicas);
   sums.order.resize(w);
@@ -88,12 +91,13 @@ void RankOneForce::evaluate(const RotorState& state, std::vector<double>& g, For
       const std::size_t k = r * w + b;
       m_cs[2 * k] = std::cos(state.theta[k]);
       m_cs[2 * k + 1] = std::sin(state.theta[k]);
-      m_a_cs[2 * k] = a * m_cs[2 * k];
-      m_a_cs[2 * k + 1] = a * m_cs[2 * k + 1];
+      m_scratch[2 * k] = a * m_cs[2 * k];
+      m_scratch[2 * k + 1] = a * m_cs[2 * k + 1];
     }
   }
-  m_z_sums.sum(m_a_cs.data(), m_z.data());
-  // MPI on the master thread; the barrier after it gives every thread the reduced Z.
+  m_z_sums.sum(m_scratch.data(), m_z.data());
+  // MPI on the master thread; the barrier after it gives every thread the reduced Z, and says
+  // that every thread has read its part of m_scratch, which the loop below overwrites.
   on_master([&] { ParallelSession::sum_in_place(m_z); });
 #pragma omp for schedule(static)
   for (std::size_t r = 0; r < rows; ++r) {
@@ -109,12 +113,12 @@ void RankOneForce::evaluate(const RotorState& state, std::vector<double>& g, For
       g[k] = m_inverse_n * (c * ys - s * yc);
       m_y[2 * k] = yc;
       m_y[2 * k + 1] = ys;
-      m_terms[2 * k] = std::sqrt(yc * yc + ys * ys);
-      m_terms[2 * k + 1] = c * yc + s * ys;
+      m_scratch[2 * k] = std::sqrt(yc * yc + ys * ys);
+      m_scratch[2 * k + 1] = c * yc + s * ys;
     }
   }
   // Both sums of every replica in one ordered pass (each column is summed on its own).
-  m_sums.sum(m_terms.data(), m_term_sums.data());
+  m_sums.sum(m_scratch.data(), m_term_sums.data());
 #pragma omp master
   for (std::size_t b = 0; b < w; ++b) {
     sums.order[b] = m_term_sums[2 * b];

@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "io/hdf5_file.hpp"
+#include "parallel/parallel_session.hpp"
 
 namespace hmfnet::verification {
 namespace {
@@ -154,18 +155,17 @@ void ClaimCheck::note(const std::string& name, std::string value) {
   m_notes.emplace_back(name, std::move(value));
 }
 
-void ClaimCheck::account(double simulated_time, double evaluations) {
-  m_evaluations += evaluations;
-  m_paper_evaluations += simulated_time / 0.01;
-}
+void ClaimCheck::account(const SimulationCost& cost) { m_cost += cost; }
 
 int ClaimCheck::exit_code() {
   const double wall = now_seconds() - m_start;
-  if (m_evaluations > 0.0) {
+  if (m_cost.evaluations > 0.0) {
+    const double paper = paper_evaluations();
     std::printf(
         "  INFO  work: %.4g force evaluations; leap-frog h = 0.01 over the same simulated "
-        "time: %.4g (%.3gx)\n",
-        m_evaluations, m_paper_evaluations, m_paper_evaluations / m_evaluations);
+        "time: %.4g (%.3gx); kernel %.4g G entries x lanes in %.1f s (%.3g G/s, %d thread(s))\n",
+        m_cost.evaluations, paper, paper / m_cost.evaluations, m_cost.kernel_work * 1e-9,
+        m_cost.kernel_seconds, m_cost.kernel_work * 1e-9 / m_cost.kernel_seconds, m_cost.threads);
   }
   std::printf("%s: %d check(s) failed (%.1f s)\n", m_failed == 0 ? "VERIFIED" : "NOT VERIFIED",
               m_failed, wall);
@@ -174,8 +174,9 @@ int ClaimCheck::exit_code() {
 }
 
 // Layout (read by paper/scripts/hmfdata.py): root attributes driver, claim, scale, passed,
-// checks (JSON list of records), hmfnet_version, git_commit, wall_seconds; /data/NAME datasets
-// (a table's column names in its attribute `columns`, a JSON list) and string attributes of /data.
+// checks (JSON list of records), hmfnet_version, git_commit, wall_seconds, the cost attributes of
+// account() and ranks; /data/NAME datasets (a table's column names in its attribute `columns`, a
+// JSON list) and string attributes of /data.
 void ClaimCheck::write_output(double wall_seconds) const {
   nlohmann::json checks = nlohmann::json::array();
   for (const Record& r : m_records) {
@@ -199,8 +200,12 @@ void ClaimCheck::write_output(double wall_seconds) const {
     file.set_attribute(root, "hmfnet_version", std::string(version()));
     file.set_attribute(root, "git_commit", std::string(git_commit()));
     file.set_attribute(root, "wall_seconds", wall_seconds);
-    file.set_attribute(root, "force_evaluations", m_evaluations);
-    file.set_attribute(root, "paper_evaluations", m_paper_evaluations);
+    file.set_attribute(root, "force_evaluations", m_cost.evaluations);
+    file.set_attribute(root, "paper_evaluations", paper_evaluations());
+    file.set_attribute(root, "kernel_work", m_cost.kernel_work);
+    file.set_attribute(root, "kernel_seconds", m_cost.kernel_seconds);
+    file.set_attribute(root, "threads", static_cast<std::int64_t>(m_cost.threads));
+    file.set_attribute(root, "ranks", static_cast<std::int64_t>(ParallelSession::ranks()));
     const H5Id group = file.create_group("data");
     for (const Series& s : m_series) {
       if (s.cols == 0) {

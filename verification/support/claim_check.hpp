@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "support/simulation_cost.hpp"
+
 namespace hmfnet::verification {
 
 /// Command line shared by every driver: `--scale ci|full`, `--output F.h5`, `--report-only`.
@@ -55,10 +57,11 @@ class ClaimCheck {
   /// A string attribute of /data (labels, JSON descriptions of the series).
   void note(const std::string& name, std::string value);
 
-  /// Adds one simulation's cost: its force evaluations, and those the paper's leap-frog h = 0.01
-  /// would have spent on the same simulated time (one pass integrates all replicas). Written as
-  /// root attributes force_evaluations and paper_evaluations (support/work_account.hpp).
-  void account(double simulated_time, double evaluations);
+  /// Adds one simulation's cost (support/work_account.hpp makes it from a run). Written as root
+  /// attributes: force_evaluations and paper_evaluations (those the paper's leap-frog h = 0.01
+  /// would have spent on the same simulated time), kernel_work, kernel_seconds and threads;
+  /// ranks is always written.
+  void account(const SimulationCost& cost);
 
   /// Prints the verdict, writes --output (atomically) and returns the exit code.
   int exit_code();
@@ -81,6 +84,8 @@ class ClaimCheck {
     std::vector<std::string> columns;  // empty: unnamed
   };
   bool record(Record r);
+  /// Leap-frog h = 0.01 over the same simulated time: one evaluation per step.
+  double paper_evaluations() const { return m_cost.simulated_time / 0.01; }
   void write_output(double wall_seconds) const;
 
   std::string m_driver;
@@ -91,7 +96,7 @@ class ClaimCheck {
   std::vector<std::pair<std::string, std::string>> m_notes;
   int m_failed = 0;
   double m_start;
-  double m_evaluations = 0.0, m_paper_evaluations = 0.0;
+  SimulationCost m_cost;
 };
 
 }  // namespace hmfnet::verification

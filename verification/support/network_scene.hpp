@@ -50,9 +50,8 @@ std::unique_ptr<Scene> complete_scene(NodeIndex n) {
   s->lambda = graph.lambda();
   s->degrees.assign(static_cast<std::size_t>(n), graph.degree());
   s->rows = std::make_unique<DistributedNetwork>(graph);
-  s->force = std::make_unique<RankOneForce>(
-      RankOneStructure{std::vector<double>(static_cast<std::size_t>(n), 1.0), false},
-      s->rows->first_row(), s->rows->local_size());
+  s->force = std::make_unique<RankOneForce>(complete_graph_structure(graph), s->rows->first_row(),
+                                            s->rows->local_size());
   return s;
 }
 

@@ -28,7 +28,7 @@ inline double range(const std::vector<double>& v) {
 inline OnsetCurve check_onset(ClaimCheck& check, const std::string& name, const Network& net,
                               double sigma0, const SweepProtocol& p) {
   OnsetCurve c = measure_onset(net, sigma0, p);
-  check.account(c.time_units, c.evaluations);
+  check.account(c.cost);
   std::string grid;
   for (std::size_t k = 0; k < c.x.size(); ++k) {
     char cell[32];
@@ -40,7 +40,7 @@ inline OnsetCurve check_onset(ClaimCheck& check, const std::string& name, const 
   std::printf(
       "  INFO  %s: lambda %.2f, K_c %.4g, R0 %.4f, %g time units; x:<R> (xm: m segments, "
       "e: equilibrated, *: fitted)%s\n",
-      name.c_str(), c.lambda, c.Kc, c.R0, c.time_units, grid.c_str());
+      name.c_str(), c.lambda, c.Kc, c.R0, c.cost.simulated_time, grid.c_str());
   std::printf(
       "  INFO  %s: x_on %.3f +- %.3f (%d points), same rule on theory %.3f, on the theory at the "
       "sweep's (E, P) %.3f\n",

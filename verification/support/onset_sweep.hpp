@@ -65,6 +65,7 @@
 #include "support/pipeline_step.hpp"
 #include "support/run_variance.hpp"
 #include "support/sample_statistics.hpp"
+#include "support/work_account.hpp"
 #include "theory/growth_rate.hpp"
 #include "theory/self_consistent.hpp"
 
@@ -104,8 +105,7 @@ struct OnsetCurve {
   double x_on_theory = NAN;           ///< the same fit on the theory curve
   double x_on_theory_ep = NAN;        ///< the same fit on R_theory_ep
   int points = 0;                     ///< grid points in the fit
-  double time_units = 0.0;            ///< simulated time per replica
-  double evaluations = 0.0;           ///< force evaluations (each covers all replicas)
+  SimulationCost cost;                ///< of every sweep run for this curve
   /// Refined grids: largest |<R>| difference between the two sweeps on the points before the
   /// first midpoint (same seeds, same K sequence: must be 0); NaN when not refined.
   double prefix_repeat = NAN;
@@ -227,7 +227,7 @@ inline void theory_at_sweep_state(OnsetCurve& c, const Network& net, const Simul
 
 /// One sweep over the grid x (K = x K_c raised from 0, each K continuing the state): appends
 /// the points' x, K, segments, <R>, error and equilibration flag to c (lambda, Kc, sigma0 set)
-/// and adds the simulated time per replica to c.time_units.
+/// and adds the run's cost to c.cost.
 inline void run_sweep(OnsetCurve& c, const DistributedNetwork& distributed, const Network& net,
                       const std::vector<double>& x, const SweepProtocol& protocol) {
   SimulationParameters p;
@@ -243,7 +243,6 @@ inline void run_sweep(OnsetCurve& c, const DistributedNetwork& distributed, cons
           p.steps.end(), static_cast<std::size_t>(m),
           pipeline_step(v, c.sigma0, protocol.duration, protocol.transient, protocol.family));
   }
-  c.time_units += static_cast<double>(p.K.size()) * protocol.duration;
   p.h = protocol.h;
   p.duration = protocol.duration;
   p.transient = protocol.transient;
@@ -255,7 +254,7 @@ inline void run_sweep(OnsetCurve& c, const DistributedNetwork& distributed, cons
   p.record_stride = 1000;
   NetworkForce force(distributed);
   const SimulationResult r = simulate(distributed, net.degrees(), force, p);
-  c.evaluations += static_cast<double>(r.force_evaluations);
+  c.cost += cost_of(p, r);
   std::size_t segment = 0;
   for (std::size_t k = first_point; k < c.x.size(); ++k) {
     const int m = static_cast<int>(c.segments[k]);
@@ -290,8 +289,7 @@ inline OnsetCurve refined_sweep(const OnsetCurve& first, const DistributedNetwor
                                 const SweepProtocol& protocol) {
   OnsetCurve c;
   c.lambda = first.lambda, c.Kc = first.Kc, c.sigma0 = first.sigma0;
-  c.time_units = first.time_units;
-  c.evaluations = first.evaluations;
+  c.cost = first.cost;
   run_sweep(c, distributed, net, refined_prefix(first.x, added), protocol);
   double repeat = 0.0;
   for (std::size_t k = 0; k < first.x.size() && first.x[k] < added.front(); ++k)
