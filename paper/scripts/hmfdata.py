@@ -5,9 +5,10 @@ Every figure and table of paper/ is drawn from the files that the verification d
 the numbers that `ctest -L verification` judged. Layout of one file:
   root attributes: driver, claim, scale (ci|full), passed, checks (JSON list of records
   {kind: check|report, what, ours, reference, detail, pass}), hmfnet_version, git_commit,
-  wall_seconds, ranks; for drivers that simulate force_evaluations, paper_evaluations,
-  kernel_work, kernel_seconds, threads (verification/support/simulation_cost.hpp); datasets
-  /data/NAME (1-D or 2-D) and string attributes of /data (notes).
+  wall_seconds, ranks, and the summed cost of the driver's accounted simulations (0 without
+  any): force_evaluations, paper_evaluations, kernel_work, kernel_seconds, threads
+  (verification/support/simulation_cost.hpp); datasets /data/NAME (1-D or 2-D) and string
+  attributes of /data (notes).
 A table's column names (or the names of a 1-D list of numbers) are the dataset's attribute
 `columns`, a JSON list; scripts read columns by those names (DriverResult.table), never by
 position, so a driver that reorders or adds a column cannot silently shift a figure's data.

@@ -201,12 +201,14 @@ def summary(results):
              "stability_limit chart the methods themselves and are not counted). Kernel: the "
              "stored entries (rows on K_N's rank-one force) times replica lanes over every force "
              "evaluation made, the stepping loops' share of the wall time, and their rate, "
-             "to set beside the kernel's measured floor (README, \"The kernel against the "
-             "yardstick and the measured bound\": ~1.4 G/s on one thread and ~2.7 G/s on two at "
-             "N = 10^4, degree 100). Threads: the most any run of the driver used.", "",
+             "to set beside the sparse kernel's measured floor (README, \"The kernel against "
+             "the yardstick and the measured bound\": ~1.4 G/s on one thread and ~2.7 G/s on "
+             "two at N = 10^4, degree 100); a driver on K_N counts rows, which cost a sin/cos "
+             "each, so its rate is not comparable with that floor. Ranks x threads: the most "
+             "threads per rank any run of the driver used.", "",
              "| driver | checks | not reproduced | wall time [s] | force evaluations | speed-up "
              "over leap-frog h = 0.01 | kernel work [G] | stepping share of wall | kernel rate "
-             "[G/s] | threads |", "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+             "[G/s] | ranks x threads |", "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     spent = paper = 0.0
     for name, r in results.items():
         n = sum(1 for c in r.checks if c["kind"] == "check")
@@ -224,15 +226,16 @@ def summary(results):
 
 
 def kernel(r, wall_s):
-    """Kernel work [G], the stepping loops' share of the wall time, their rate and the threads;
-    blank cells for a driver without simulations or from before these were recorded."""
+    """Kernel work [G], the stepping loops' share of the wall time, their rate (all ranks' work
+    over the stepping time) and ranks x threads; blank cells for a driver whose simulations are
+    not accounted (work_precision, stability_limit) or from before these were recorded."""
     work = float(r.attrs.get("kernel_work", 0.0))
     seconds = float(r.attrs.get("kernel_seconds", 0.0))
     if work <= 0.0 or seconds <= 0.0:
         return " | | | "
     share = f"{seconds / wall_s:.0%}" if wall_s > 0 else ""
     return (f"{work * 1e-9:.4g} | {share} | {work * 1e-9 / seconds:.3g} | "
-            f"{int(r.attrs.get('threads', 0))}")
+            f"{int(r.attrs.get('ranks', 1))} x {int(r.attrs.get('threads', 0))}")
 
 
 def main():

@@ -96,8 +96,9 @@ void RankOneForce::evaluate(const RotorState& state, std::vector<double>& g, For
     }
   }
   m_z_sums.sum(m_scratch.data(), m_z.data());
-  // MPI on the master thread; the barrier after it gives every thread the reduced Z, and says
-  // that every thread has read its part of m_scratch, which the loop below overwrites.
+  // MPI on the master thread; the barrier after it gives every thread the reduced Z. The loop
+  // below overwrites m_scratch: every read of it in the sum above ended at that sum's own
+  // worksharing barrier, before the master's reduction and this barrier.
   on_master([&] { ParallelSession::sum_in_place(m_z); });
 #pragma omp for schedule(static)
   for (std::size_t r = 0; r < rows; ++r) {

@@ -39,6 +39,30 @@ def expect_error(kind, call, *needles):
     raise AssertionError(f"expected {kind.__name__}, nothing raised")
 
 
+def check_summary(directory, hmfdata):
+    """make_report's summary: a file written before the cost attributes existed gets blank cells,
+    one with them gets work [G], stepping share, rate = work / stepping seconds, ranks x threads;
+    every row has as many cells as the header."""
+    import make_report
+    with h5py.File(os.path.join(directory, "costed.h5"), "w") as f:
+        for key, value in {"hmfnet_format": "verification", "driver": "costed", "claim": "c",
+                           "scale": "ci", "passed": 1, "checks": "[]", "wall_seconds": 10.0,
+                           "force_evaluations": 100.0, "paper_evaluations": 400.0,
+                           "kernel_work": 6e9, "kernel_seconds": 8.0, "threads": 2,
+                           "ranks": 3}.items():
+            f.attrs[key] = value
+        f.create_group("data")
+    results = {name: hmfdata.load(directory, name) for name in ("tiny", "costed")}
+    lines = make_report.summary(results)
+    header = next(line for line in lines if line.startswith("| driver |"))
+    rows = {line.split("|")[1].strip(): line for line in lines if line.startswith("| `")}
+    for row in rows.values():
+        assert row.count("|") == header.count("|"), (row, header)
+    cells = [c.strip() for c in rows["`costed`"].split("|")[1:-1]]
+    assert cells[4:] == ["100", "4.00x", "6", "80%", "0.75", "3 x 2"], cells
+    assert all(c.strip() == "" for c in rows["`tiny`"].split("|")[5:-1]), rows["`tiny`"]
+
+
 def main():
     sys.path.insert(0, sys.argv[1])
     import hmfdata
@@ -58,7 +82,9 @@ def main():
         expect_error(KeyError, lambda: result.table("unnamed"), path, "/data/unnamed",
                      "no column names")
         expect_error(KeyError, lambda: result.table("absent"), "tiny", "absent")
-    print("hmfdata: columns by name, and errors naming file, dataset and column: ok")
+        check_summary(directory, hmfdata)
+    print("hmfdata: columns by name, and errors naming file, dataset and column; the report's "
+          "summary on files with and without the cost attributes: ok")
     return 0
 
 

@@ -31,8 +31,6 @@ TEST_CASE("cost_of: kernel work is entries x lanes x evaluations, whatever the l
   REQUIRE(seq.nnz_per_evaluation == net.nnz());
   REQUIRE(a.kernel_work ==
           static_cast<double>(seq.force_evaluations) * static_cast<double>(net.nnz()) * 2.0);
-  REQUIRE(a.kernel_seconds == seq.integration_seconds);
-  REQUIRE(a.threads == seq.threads);
 
   p.K_across_replicas = true;  // one pass, 6 lanes
   const SimulationResult once = simulate(d, net.degrees(), force, p);

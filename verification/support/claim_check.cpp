@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -165,7 +166,9 @@ int ClaimCheck::exit_code() {
         "  INFO  work: %.4g force evaluations; leap-frog h = 0.01 over the same simulated "
         "time: %.4g (%.3gx); kernel %.4g G entries x lanes in %.1f s (%.3g G/s, %d thread(s))\n",
         m_cost.evaluations, paper, paper / m_cost.evaluations, m_cost.kernel_work * 1e-9,
-        m_cost.kernel_seconds, m_cost.kernel_work * 1e-9 / m_cost.kernel_seconds, m_cost.threads);
+        m_cost.kernel_seconds,
+        m_cost.kernel_seconds > 0.0 ? m_cost.kernel_work * 1e-9 / m_cost.kernel_seconds : 0.0,
+        m_cost.threads);
   }
   std::printf("%s: %d check(s) failed (%.1f s)\n", m_failed == 0 ? "VERIFIED" : "NOT VERIFIED",
               m_failed, wall);

@@ -1,5 +1,6 @@
 #pragma once
-// A network as the long-run drivers (near_onset_gap, qss_networks) integrate and solve it: its
+// A network as the long-run drivers (near_onset_gap, qss_networks, waterbag_threshold) integrate
+// and solve it: its
 // rows over the ranks, its force (the O(N) rank-one force on the complete graph, the sparse one
 // otherwise) and what eq:rSigmaBesselMain needs of it (on K_N its one-node quotient: the same map
 // and solution, network/complete_graph.hpp), with the comparison at a run's own conserved E and P
