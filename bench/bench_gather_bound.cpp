@@ -7,8 +7,9 @@
 //    table of N records (the kernel's table, the same size and record width, in the same cache
 //    level);
 //  - SincosFloor/N/degree/replicas/threads: the other per-step work the kernel cannot skip, one
-//    sincos per rotor and replica (glibc's), counted per stored entry x replica so that
-//    1 / (1 / gather + 1 / sincos) is the kernel's floor;
+//    sincos per rotor and replica (the kernel's own vectorised one), counted per stored entry x
+//    replica so that 1 / (1 / gather + 1 / sincos) is the kernel's floor; SincosLibc: the same
+//    with glibc's scalar sincos, which the kernel used before;
 //  - GatherLadder/table_kib/threads: uniform random indices over a table of 16-byte records
 //    sized for L1, L2, L3 and memory (this machine: 32 KiB L1d and 512 KiB L2 per core, 32 MiB
 //    L3 shared), the latency-bandwidth ladder the kernel's tables sit on.
@@ -22,6 +23,7 @@
 #include <vector>
 
 #include "cached_network.hpp"
+#include "dynamics/sincos.hpp"
 
 using namespace hmfnet;
 
@@ -92,7 +94,11 @@ void GatherBound(benchmark::State& state) {
       static_cast<double>(net.nnz()) * replicas, benchmark::Counter::kIsIterationInvariantRate);
 }
 
-void SincosFloor(benchmark::State& state) {
+// One [cos, sin] per rotor and replica, by `sincos` over a team of `threads` (the kernel's own,
+// dynamics/sincos.hpp: SincosFloor; or glibc's scalar sincos: SincosLibc, its predecessor, for
+// the ratio in one run). Rates per stored entry x replica, as LeapFrogStep's.
+template <bool Libc>
+void sincos_rate(benchmark::State& state) {
   const Network& net = bench::cached_erdos_renyi(static_cast<NodeIndex>(state.range(0)),
                                                  static_cast<double>(state.range(1)));
   const auto replicas = static_cast<std::size_t>(state.range(2));
@@ -102,15 +108,26 @@ void SincosFloor(benchmark::State& state) {
   for (std::size_t k = 0; k < cells; ++k) theta[k] = 0.001 * static_cast<double>(k);
   const auto count = static_cast<std::int64_t>(cells);
   for (auto _ : state) {
+    if constexpr (Libc) {
 #pragma omp parallel for schedule(static)
-    for (std::int64_t k = 0; k < count; ++k)
-      ::sincos(theta[std::size_t(k)], &cs[2 * std::size_t(k) + 1], &cs[2 * std::size_t(k)]);
+      for (std::int64_t k = 0; k < count; ++k)
+        ::sincos(theta[std::size_t(k)], &cs[2 * std::size_t(k) + 1], &cs[2 * std::size_t(k)]);
+    } else {
+#pragma omp parallel
+      sincos_interleaved_team(theta.data(), cells, cs.data());
+    }
     benchmark::DoNotOptimize(cs.data());
   }
   state.counters["nnz_steps_per_s"] =
       benchmark::Counter(static_cast<double>(net.nnz()) * static_cast<double>(replicas),
                          benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["ns_per_angle"] = benchmark::Counter(
+      static_cast<double>(cells) * 1e-9,
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
+
+void SincosFloor(benchmark::State& state) { sincos_rate<false>(state); }
+void SincosLibc(benchmark::State& state) { sincos_rate<true>(state); }
 
 void GatherLadder(benchmark::State& state) {
   const auto records = static_cast<std::size_t>(state.range(0)) * 1024 / 16;
@@ -143,6 +160,10 @@ BENCHMARK(GatherBound)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(SincosFloor)
     ->ArgsProduct({{10000, 1000000}, {100}, {1, 4, 8}, {1, 2}})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(SincosLibc)
+    ->ArgsProduct({{10000}, {100}, {1}, {1, 2}})
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 // Args: table KiB (L1, L2, L3, memory), threads.

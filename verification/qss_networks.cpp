@@ -38,8 +38,13 @@
 //   - full scale only: at N = 400 the network life grows with d = 20 .. 200 (RR and ER): the
 //     exponent of a weighted power-law fit exceeds 3 se. The CI sweep (d = 20 .. 100 at N = 200)
 //     resolves it to ~2-2.5 se only, so there it is reported;
-//   - at fixed d = 20 the life grows with N more slowly than on K_N (d = N - 1): exponent of
-//     K_N minus that of RR (and of ER) > 3 se of the difference;
+//   - full scale only: at fixed d = 20 the life grows with N more slowly than on K_N
+//     (d = N - 1): exponent of K_N minus that of RR (and of ER) > 3 se of the difference (full:
+//     1.47 and 1.57 against 3 se = 0.55 and 0.52). At CI scale (three N over a 4x range, 16
+//     replicas) the difference, ~1.4-1.5, is only ~3-4.5 se of its error, so the check passed
+//     there by chance: with the previous sincos RR 4.3 se and ER 4.3 se, with the vectorised
+//     one (session 17; every trajectory differs in its last bits) RR 3.5 se and ER 2.7 se
+//     (ER 0.44 +- 0.33 against K_N 1.70 +- 0.32). There both exponents are reported;
 //   - every self-consistent solve converged.
 // Reported: the exponents; each network life against K_N's fitted law at N = d + 1 (does a
 //   network live as K_N with its degree would?); the RR / ER life ratio at each d; the initial
@@ -318,11 +323,13 @@ int main(int argc, char** argv) {
     });
     const verification::PowerLaw n_fit = fit(by_n, false);
     const double se = std::hypot(n_fit.slope_se, complete_n.slope_se);
-    check.holds(fam + ", d = 20: the life grows with N more slowly than on K_N (d = N - 1)",
-                complete_n.slope - n_fit.slope > 3.0 * se,
-                "exponents " + exponent_text(n_fit) + " (" + fam + ") and " +
-                    exponent_text(complete_n) +
-                    " (K_N); difference > 3 se = " + ClaimCheck::format(3.0 * se));
+    if (check.full()) {
+      check.holds(fam + ", d = 20: the life grows with N more slowly than on K_N (d = N - 1)",
+                  complete_n.slope - n_fit.slope > 3.0 * se,
+                  "exponents " + exponent_text(n_fit) + " (" + fam + ") and " +
+                      exponent_text(complete_n) +
+                      " (K_N); difference > 3 se = " + ClaimCheck::format(3.0 * se));
+    }
     check.report(fam + ", d = 20: exponent of the life against N", n_fit.slope, complete_n.slope,
                  "+- " + ClaimCheck::format(n_fit.slope_se) +
                      " over N = " + std::to_string(plan.network_sizes.front()) + " .. " +

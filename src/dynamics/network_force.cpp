@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "dynamics/ordered_sum.hpp"
+#include "dynamics/sincos.hpp"
 #include "dynamics/team.hpp"
 
 namespace hmfnet {
@@ -240,10 +241,7 @@ void NetworkForce::evaluate(const RotorState& state, std::vector<double>& g, For
   if (outside_team()) prepare(state, g, sums);
   const int nb = state.replicas;
   const std::size_t cells = static_cast<std::size_t>(state.rows) * static_cast<std::size_t>(nb);
-#pragma omp for schedule(static)
-  for (std::size_t k = 0; k < cells; ++k) {
-    ::sincos(state.theta[k], &m_owned_cs[2 * k + 1], &m_owned_cs[2 * k]);  // one call: both
-  }
+  sincos_interleaved_team(state.theta.data(), cells, m_owned_cs.data());
   const double* column_cs = m_owned_cs.data();
   if (!m_identity_import) {
     // Tpetra and MPI on one thread; the barrier after it publishes the ghost values.

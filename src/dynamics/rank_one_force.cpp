@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "dynamics/ordered_sum.hpp"
+#include "dynamics/sincos.hpp"
 #include "dynamics/team.hpp"
 #include "parallel/parallel_session.hpp"
 
@@ -83,14 +84,15 @@ void RankOneForce::evaluate(const RotorState& state, std::vector<double>& g, For
   const int nb = state.replicas;
   const auto w = static_cast<std::size_t>(nb);
   const auto rows = static_cast<std::size_t>(state.rows);
-  // Z_b = sum_m a_m e^{i theta_m}: ordered local sums, then over ranks.
+  // Z_b = sum_m a_m e^{i theta_m}: ordered local sums, then over ranks. The [cos, sin] blocks
+  // are shared out in other blocks than the rows below, so the loop after them reads them only
+  // after their worksharing barrier.
+  sincos_interleaved_team(state.theta.data(), rows * w, m_cs.data());
 #pragma omp for schedule(static)
   for (std::size_t r = 0; r < rows; ++r) {
     const double a = m_structure.a[static_cast<std::size_t>(m_first_row) + r];
     for (std::size_t b = 0; b < w; ++b) {
       const std::size_t k = r * w + b;
-      m_cs[2 * k] = std::cos(state.theta[k]);
-      m_cs[2 * k + 1] = std::sin(state.theta[k]);
       m_scratch[2 * k] = a * m_cs[2 * k];
       m_scratch[2 * k + 1] = a * m_cs[2 * k + 1];
     }

@@ -1,0 +1,40 @@
+#pragma once
+// The cosine and sine of every rotor's angle, the one transcendental step of a force evaluation:
+// eq:localOrderParam sums e^{i theta_m} over the neighbours, and eq:dMomentum_dT is the product
+// of that sum with e^{-i theta_n}.
+//
+// glibc's scalar sincos costs ~15-24 ns per angle on the development machine: ~16% of a leap-frog
+// step on ER N = 10^4, degree 100, more than the gathers at degree <= 20, and ~70% of the
+// rank-one force on the complete graph. This one computes four angles at once with no branch
+// (GCC/Clang vector types: two SSE2 registers on the x86-64 baseline, one AVX2 register where the
+// CPU has it, chosen at run time): Cody-Waite reduction by pi/2 in four parts with the rounding of
+// the reduced angle carried, then minimax polynomials on [-pi/4, pi/4]. Its error is below
+// 0.8 ulp up to |x| = 10^7 (tests/dynamics/test_sincos.cpp); angles beyond kReducedRange, and
+// non-finite ones, go to the C library. bench/ensemble_table.sh prints its time per angle beside
+// glibc's.
+//
+// Reproducibility: an angle's [cos, sin] depends on its value only, never on where it sits in
+// the array (vector body or padded tail), on the thread that computes it or on the CPU: the same
+// IEEE additions and multiplications in the same order in every lane and in both instruction
+// sets, compiled without floating-point contraction (src/CMakeLists.txt). So runs stay
+// bit-identical across thread and rank counts, as the force kernels promise.
+#include <cstddef>
+
+namespace hmfnet {
+
+// |x| up to which the four-part reduction keeps the reduced angle exact to ~2^-105 |x|: the
+// quadrant count q stays below 2^26, so q times each 26-bit part of pi/2 is exact.
+inline constexpr double kReducedRange = 1e7;
+
+// cs[2k] = cos(x[k]), cs[2k + 1] = sin(x[k]) for k < n. Uses AVX2 where the CPU has it.
+void sincos_interleaved(const double* x, std::size_t n, double* cs);
+
+// The same in the x86-64 baseline instructions (SSE2) whatever the CPU: the same bits, slower;
+// for the tests that say so.
+void sincos_interleaved_baseline(const double* x, std::size_t n, double* cs);
+
+// The same angles over the threads of the current team (an orphaned `omp for` in blocks; outside
+// a parallel region one thread does all): every thread must call it.
+void sincos_interleaved_team(const double* x, std::size_t n, double* cs);
+
+}  // namespace hmfnet
