@@ -16,8 +16,13 @@ constexpr int kLanes = 4;
 using VecD = double __attribute__((vector_size(kLanes * sizeof(double))));
 using VecU = std::uint64_t __attribute__((vector_size(kLanes * sizeof(double))));
 
+// Everything below is inlined into each instruction-set version (sincos_block and
+// sincos_block_avx2), so that the vectors stay in registers of that set and no 32-byte vector is
+// ever passed between functions compiled for different sets (what GCC's -Wpsabi note is about).
+#define HMFNET_INLINE inline __attribute__((always_inline))
+
 template <typename To, typename From>
-To bits_as(const From& from) {
+HMFNET_INLINE To bits_as(const From& from) {
   static_assert(sizeof(To) == sizeof(From), "a reinterpretation keeps the size");
   To to;
   std::memcpy(&to, &from, sizeof to);
@@ -44,10 +49,6 @@ constexpr double kCos[6] = {-1.13585365213876817300e-11, 2.08757008419747316778e
                             -2.75573141792967388112e-7,  2.48015872888517045348e-5,
                             -1.38888888888730564116e-3,  4.16666666666665929218e-2};
 
-// Inlined into each instruction-set version below, so that the vectors stay in registers of
-// that set.
-#define HMFNET_INLINE inline __attribute__((always_inline))
-
 // The lanes' cos and sin. A lane whose |x| exceeds kReducedRange (or is not finite) computes
 // sin 0 instead; the caller overwrites it with the C library's value.
 HMFNET_INLINE void sincos_lanes(const VecD& angle, VecD& c, VecD& s) {
@@ -59,14 +60,19 @@ HMFNET_INLINE void sincos_lanes(const VecD& angle, VecD& c, VecD& s) {
   const VecD t = x * kTwoOverPi + kRoundShift;
   const VecD q = t - kRoundShift;
   const VecU j = bits_as<VecU>(t);  // q mod 4 = j & 3
-  // r + r_lo = x - q pi/2: x - q kPio2[0] and the next subtraction are exact; the two smallest
-  // products are summed first, r is rounded once and r_lo is that rounding (Fast2Sum: |a| is
-  // the larger). Without r_lo the rounding of r alone costs 1 ulp where |sin| or |cos| is just
-  // below 1/2 and |r| just above (measured 1.5 ulp; with it 0.7-0.8).
+  // r + r_lo = x - q pi/2 to ~2^-105 |x|: x - q kPio2[0] and the next subtraction are exact;
+  // b = q kPio2[2] + q kPio2[3] with its rounding error eb (Fast2Sum, |p2| >= |p3|); r = a - b
+  // rounded once, and r_lo the rounding of r (Fast2Sum: exact because a is a multiple of a unit
+  // at least ulp(b), also where |a| < |b|) less eb. Without r_lo the rounding of r costs 1 ulp
+  // where |sin| or |cos| is just below 1/2 and |r| just above (measured 1.5 ulp); without eb,
+  // angles within ~10^-10 of a multiple of pi/2 (|r| tiny) lose up to thousands of ulp.
   const VecD a = (x - q * kPio2[0]) - q * kPio2[1];
-  const VecD b = q * kPio2[2] + q * kPio2[3];
+  const VecD p2 = q * kPio2[2];
+  const VecD p3 = q * kPio2[3];
+  const VecD b = p2 + p3;
+  const VecD eb = p3 - (b - p2);
   const VecD r = a - b;
-  const VecD r_lo = (a - r) - b;
+  const VecD r_lo = ((a - r) - b) - eb;
   const VecD z = r * r;
   const VecD ps =
       ((((kSin[0] * z + kSin[1]) * z + kSin[2]) * z + kSin[3]) * z + kSin[4]) * z + kSin[5];
@@ -141,6 +147,14 @@ bool has_avx2() {
 
 void sincos_interleaved_baseline(const double* x, std::size_t n, double* cs) {
   sincos_block(x, n, cs);
+}
+
+bool sincos_uses_avx2() {
+#ifdef HMFNET_SINCOS_AVX2
+  return has_avx2();
+#else
+  return false;
+#endif
 }
 
 void sincos_interleaved(const double* x, std::size_t n, double* cs) {

@@ -8,16 +8,19 @@
 // rank-one force on the complete graph. This one computes four angles at once with no branch
 // (GCC/Clang vector types: two SSE2 registers on the x86-64 baseline, one AVX2 register where the
 // CPU has it, chosen at run time): Cody-Waite reduction by pi/2 in four parts with the rounding of
-// the reduced angle carried, then minimax polynomials on [-pi/4, pi/4]. Its error is below
-// 0.8 ulp up to |x| = 10^7 (tests/dynamics/test_sincos.cpp); angles beyond kReducedRange, and
-// non-finite ones, go to the C library. bench/ensemble_table.sh prints its time per angle beside
-// glibc's.
+// the reduced angle carried, then minimax polynomials on [-pi/4, pi/4]. Its error is below 1 ulp
+// up to |x| = 10^7, also at the doubles nearest multiples of pi/2 (tests/dynamics/
+// test_sincos.cpp); angles beyond kReducedRange, and non-finite ones, go to the C library.
+// bench/ensemble_table.sh prints its time per angle beside glibc's.
 //
-// Reproducibility: an angle's [cos, sin] depends on its value only, never on where it sits in
-// the array (vector body or padded tail), on the thread that computes it or on the CPU: the same
-// IEEE additions and multiplications in the same order in every lane and in both instruction
-// sets, compiled without floating-point contraction (src/CMakeLists.txt). So runs stay
-// bit-identical across thread and rank counts, as the force kernels promise.
+// Reproducibility: for |x| <= kReducedRange an angle's [cos, sin] depends on its value only,
+// never on where it sits in the array (vector body or padded tail), on the thread that computes
+// it or on the CPU: the same IEEE additions and multiplications in the same order in every lane
+// and in both instruction sets, compiled without floating-point contraction
+// (src/CMakeLists.txt); the test pins some of its bits. So runs stay bit-identical across thread
+// and rank counts, as the force kernels promise. Beyond that range (the angles are not wrapped,
+// so a long run's can grow) the C library's sincos decides, and glibc picks its own version by
+// CPU.
 #include <cstddef>
 
 namespace hmfnet {
@@ -32,6 +35,9 @@ void sincos_interleaved(const double* x, std::size_t n, double* cs);
 // The same in the x86-64 baseline instructions (SSE2) whatever the CPU: the same bits, slower;
 // for the tests that say so.
 void sincos_interleaved_baseline(const double* x, std::size_t n, double* cs);
+
+// Whether sincos_interleaved runs the AVX2 version on this CPU.
+bool sincos_uses_avx2();
 
 // The same angles over the threads of the current team (an orphaned `omp for` in blocks; outside
 // a parallel region one thread does all): every thread must call it.
