@@ -44,10 +44,13 @@
 //     item 4d). ER's gap also holds the theory's own approximation error on a sparse network;
 //   - every self-consistent solve converged.
 //   tau measures the fast first rise, not the slow closing of the gap.
-// Found (CI scale, session 15; full scale in paper/full/REPORT.md): the gap closes with time
-//   everywhere (the late gap is smaller in 17 of 18 scenes); on K_N at 1.5 K_c the late gap is
-//   -0.070, -0.098, -0.125 (+- 0.006) at N = 500, 1000, 2000, on ER -0.010, -0.027, -0.017
-//   (+- 0.007): on K_N the gap grows with N, on ER at fixed d it does not.
+// Found (CI scale, session 15): the gap closes with time everywhere (the late gap is smaller in
+//   17 of 18 scenes); on K_N at 1.5 K_c the late gap is -0.070, -0.098, -0.125 (+- 0.006) at
+//   N = 500, 1000, 2000, on ER -0.010, -0.027, -0.017 (+- 0.007): on K_N the gap grows with N,
+//   on ER at fixed d it does not. Full scale (session 18, paper/full/beyond/REPORT.md, 1184 s
+//   at 2 threads): the same, 18 of 18 scenes; at 1.5 K_c K_N -0.051, -0.093, -0.133 (+- 0.003 -
+//   0.006) at N = 1000, 3000, 10^4, ER -0.009, -0.009, -0.010 (+- 0.001 - 0.003), where R(t)
+//   has stopped moving by t ~ 4000, 2.4-2.8% below the theory at every N (README, "Near onset").
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
