@@ -44,7 +44,10 @@
 //   to T = 4000 (docs/scripts/er_long_window.sh, session 7) closes the gap at 2 K_c from -0.022
 //   over [500, 1000] to -0.013, -0.009 and -0.007 over [1000, 2000], [2000, 3000] and
 //   [3000, 4000] (se <= 0.002), and at 3 K_c from -0.010 to -0.003; the paper's T is too short
-//   for N = 10^4 at these K.
+//   for N = 10^4 at these K. The sweep, which reaches each K from a synchronized state, does not
+//   lag: at full scale (session 18, paper/full/beyond/) all its K >= 2 K_c points pass on ER and
+//   SF (|diff| <= 0.0076), while the restart points fail again at ER 2 and 3 K_c and, at the
+//   edge, SF 3 K_c (diff -0.0097 against a tolerance of 0.0096).
 // Tolerance per point: |<R>_sim - R_theory| <= 3 se + delta_fs. se: the standard error of the
 //   replica-mean gap, the larger of the batch-means SEM of <R>_t (20 batches, combined over
 //   replicas) and the replica sd of each replica's own gap <R>_t - R_theory over sqrt(B). The SEM
