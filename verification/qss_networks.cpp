@@ -55,6 +55,10 @@
 //   N = 200 .. 3200; at N = 400 RR lives 149, 231, 533, 1226 at d = 20 .. 200 (K_N 3928): 7.5,
 //   2.4, 1.7 and 1.15 times K_N's law at N = d + 1. From d ~ 100 a network lives as the
 //   complete graph with its degree would; at d = 20 something else ends the QSS first.
+//   Full, session 18 (after the vectorised sincos; paper/full/beyond/): K_N N^(1.70 +- 0.12),
+//   RR N^(0.22 +- 0.08), ER N^(0.19 +- 0.09), d exponents 0.99 and 1.16, but the two
+//   "K_N outlives d = 200" checks fail at 2.3 and 1.9 se: K_N's N = 400 life, 2774 +- 779 with 16
+//   replicas, fell below its own fitted law (~3150). The check needs more K_N replicas.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
