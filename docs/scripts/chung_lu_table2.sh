@@ -7,24 +7,16 @@
 # Needs bash, xargs, python3 (standard library only). About 4 minutes on 2 cores.
 set -euo pipefail
 
-if [[ $# -lt 1 || ! -x "$1" ]]; then
-  echo "usage: $0 HMFNET_BINARY [NSEEDS] [JOBS]" >&2
-  exit 2
-fi
-HMF=$(realpath "$1")
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+script_binary "$0 HMFNET_BINARY [NSEEDS] [JOBS]" "${1:-}"
 NSEEDS=${2:-5}
 JOBS=${3:-2}
 N=10000
 MEAN=100
 export HMF N MEAN
 
-TMP=$(mktemp -d "${TMPDIR:-/tmp}/chung_lu_table2.XXXXXX")
+script_tmp chung_lu_table2
 export TMP
-if [[ "${KEEP:-0}" == 1 ]]; then
-  echo "# JSON lines kept in $TMP" >&2
-else
-  trap 'rm -rf "$TMP"' EXIT
-fi
 mkdir -p "$TMP/runs" "$TMP/nets" "$TMP/rewire"
 
 # Generate one network and append its spectrum as a JSON line. d is the continuum d_min for mean

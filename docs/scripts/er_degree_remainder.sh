@@ -20,20 +20,10 @@
 # Needs python3 with h5py and numpy (Debian's /usr/bin/python3, ci/install-deps.sh).
 set -euo pipefail
 
-if [[ $# -lt 1 || ! -x "$1" ]]; then
-  echo "usage: $0 HMFNET_BINARY" >&2
-  exit 2
-fi
-HMF=$(realpath "$1")
-PY=/usr/bin/python3
-[[ -x $PY ]] || PY=python3
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+script_binary "$0 HMFNET_BINARY" "${1:-}"
 
-TMP=$(mktemp -d "${TMPDIR:-/tmp}/er_degree_remainder.XXXXXX")
-if [[ "${KEEP:-0}" == 1 ]]; then
-  echo "# runs kept in $TMP" >&2
-else
-  trap 'rm -rf "$TMP"' EXIT
-fi
+script_tmp er_degree_remainder
 
 for d in 30 100 300; do
   "$HMF" generate er --n 3000 --mean-degree "$d" --seed 1 -o "$TMP/er$d.h5" >&2

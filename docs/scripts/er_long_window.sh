@@ -16,20 +16,10 @@
 # Needs python3 with h5py and numpy (Debian's /usr/bin/python3, ci/install-deps.sh).
 set -euo pipefail
 
-if [[ $# -lt 1 || ! -x "$1" ]]; then
-  echo "usage: $0 HMFNET_BINARY" >&2
-  exit 2
-fi
-HMF=$(realpath "$1")
-PY=/usr/bin/python3
-[[ -x $PY ]] || PY=python3
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+script_binary "$0 HMFNET_BINARY" "${1:-}"
 
-TMP=$(mktemp -d "${TMPDIR:-/tmp}/er_long_window.XXXXXX")
-if [[ "${KEEP:-0}" == 1 ]]; then
-  echo "# runs kept in $TMP" >&2
-else
-  trap 'rm -rf "$TMP"' EXIT
-fi
+script_tmp er_long_window
 
 "$HMF" generate er --n 10000 --q 0.01 --seed 1 -o "$TMP/er.h5" >&2
 "$HMF" simulate "$TMP/er.h5" --sigma0 0.34641016 --K-over-Kc 2,3 --restart-each-K \

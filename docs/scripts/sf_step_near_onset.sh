@@ -23,21 +23,13 @@
 # at h = 0.32 against 0.1642 +- 0.0016 at 0.16, difference -0.0010 +- 0.0022.
 set -euo pipefail
 
-if [[ $# -lt 1 || ! -x "$1" ]]; then
-  echo "usage: $0 HMFNET_BINARY [STEPS]" >&2
-  exit 2
-fi
-HMF=$(realpath "$1")
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+script_binary "$0 HMFNET_BINARY [STEPS]" "${1:-}"
 STEPS=${2:-"0.32 0.16"}
 REPLICAS=${REPLICAS:-48}
 SEED=${SEED:-101}
 
-TMP=$(mktemp -d "${TMPDIR:-/tmp}/sf_step_near_onset.XXXXXX")
-if [[ "${KEEP:-0}" == 1 ]]; then
-  echo "# runs kept in $TMP" >&2
-else
-  trap 'rm -rf "$TMP"' EXIT
-fi
+script_tmp sf_step_near_onset
 
 "$HMF" generate sf --n 10000 --alpha 2.8 --mean-degree 100 --cutoff 9999 --seed 2 \
   -o "$TMP/sf.h5" >&2
