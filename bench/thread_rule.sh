@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # The default thread count against the best one (issue #16, goal 1): `hmfnet simulate` on ER
-# networks from 500 to 10^7 stored entries, with --threads 1, --threads 2 and the default
+# networks from 500 to 10^7 stored entries and on complete graphs (the rank-one force: no stored
+# entries, only rows) with 1 to 16 replicas, with --threads 1, --threads 2 and the default
 # (src/dynamics/thread_choice.hpp), under OMP_WAIT_POLICY unset, ACTIVE and PASSIVE; all in one
-# run so the ratios are comparable. Prints the integration loop's rate (nnz * steps * replicas
-# per second, as the CLI reports it), the threads the default chose, and default / best.
+# run so the ratios are comparable. Prints the integration loop's rate (work * steps per second,
+# as the CLI reports it: stored entries x replicas for ER, rows x replicas for K_N; G/s), the
+# rule's work per step (gathers + k_row_work per row, x replicas), the threads the default chose,
+# and default / best.
 # Run on an idle machine. Usage: bench/thread_rule.sh [BUILD_DIR (default build)]
 set -euo pipefail
 build=${1:-build}
@@ -11,18 +14,31 @@ hmfnet="$build/bin/hmfnet"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-rate() {  # policy, network, T, extra args... -> "rate threads"
+rate() {  # policy, network, T, extra args... -> "rate threads work"
   local policy=$1 net=$2 T=$3
   shift 3
   local env=(env -u OMP_WAIT_POLICY -u OMP_NUM_THREADS)
   [[ $policy != unset ]] && env+=(OMP_WAIT_POLICY="$policy")
   "${env[@]}" "$hmfnet" simulate "$net" --K-over-Kc 1.5 --T "$T" --transient 0 --h 0.01 \
     --seed 1 --record-stride 1000000 --json --quiet "$@" 2>/dev/null |
-    python3 -c "import json,sys; d=json.load(sys.stdin); print(d['nnz_steps_per_second']/1e9, d['threads'])"
+    python3 -c "import json,sys; d=json.load(sys.stdin); print(d['nnz_steps_per_second']/1e9, d['threads'], d.get('thread_rule_work', 0))"
 }
 
-printf "%-22s %-8s %9s %9s %9s %8s %13s\n" network policy "1 thread" "2 threads" default \
-  "chosen" "default/best"
+row() {  # label, network, T, extra args...
+  local label=$1 net=$2 T=$3
+  shift 3
+  for policy in unset ACTIVE PASSIVE; do
+    read -r one _ _ < <(rate "$policy" "$net" "$T" --threads 1 "$@")
+    read -r two _ _ < <(rate "$policy" "$net" "$T" --threads 2 "$@")
+    read -r def chosen work < <(rate "$policy" "$net" "$T" "$@")
+    python3 -c "
+one, two, d = $one, $two, $def
+print('%-24s %-8s %10d %9.3f %9.3f %9.3f %8d %13.2f' % ('$label', '$policy', $work, one, two, d, $chosen, d / max(one, two)))"
+  done
+}
+
+printf "%-24s %-8s %10s %9s %9s %9s %8s %13s\n" network policy "rule work" "1 thread" \
+  "2 threads" default "chosen" "default/best"
 # N, mean degree, T: about 2e9 stored entries x steps per run (less for the two smallest,
 # whose rate is set by the per-step costs, not the entries).
 for spec in "100 5 4000" "300 10 4000" "1000 10 2000" "10000 10 200" "10000 100 20" \
@@ -30,12 +46,14 @@ for spec in "100 5 4000" "300 10 4000" "1000 10 2000" "10000 10 200" "10000 100 
   read -r n d T <<<"$spec"
   net="$tmp/er_${n}_${d}.h5"
   "$hmfnet" generate er --n "$n" --mean-degree "$d" --seed 1 -o "$net" 2>/dev/null
-  for policy in unset ACTIVE PASSIVE; do
-    read -r one _ < <(rate "$policy" "$net" "$T" --threads 1)
-    read -r two _ < <(rate "$policy" "$net" "$T" --threads 2)
-    read -r def chosen < <(rate "$policy" "$net" "$T")
-    python3 -c "
-one, two, d = $one, $two, $def
-print('%-22s %-8s %9.3f %9.3f %9.3f %8d %13.2f' % ('ER N=$n d=$d', '$policy', one, two, d, $chosen, d / max(one, two)))"
-  done
+  row "ER N=$n d=$d" "$net" "$T"
+done
+# The complete graph (O(N) rank-one force): N, replicas, T; about 2e8 rows x replicas x steps
+# (the QSS drivers' scenes: N = 200 .. 1600 with 16 replicas).
+for spec in "100 1 20000" "200 16 600" "1600 16 80" "1000 1 2000" "20000 1 100" \
+  "100000 1 20"; do
+  read -r n b T <<<"$spec"
+  net="$tmp/complete_${n}.h5"
+  [[ -f $net ]] || "$hmfnet" generate complete --n "$n" -o "$net" 2>/dev/null
+  row "K_N N=$n B=$b" "$net" "$T" --replicas "$b"
 done

@@ -228,6 +228,7 @@ SimulateReport simulate_report(const SimulateFlags& f, const DistributedInput& i
                                 static_cast<double>(result.lanes) / result.integration_seconds;
   out["resumed"] = result.resumed;
   out["threads"] = result.threads;
+  out["thread_rule_work"] = result.thread_rule_work;
   out["ranks"] = ParallelSession::ranks();
   const std::vector<double> peak_mb = ParallelSession::peak_memory_mb();
   out["peak_rss_mb_per_rank"] = peak_mb;

@@ -37,6 +37,7 @@ class RankOneForce : public CouplingForce {
   void prepare(const RotorState& state, std::vector<double>& g, ForceSums& sums) override;
   void evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) override;
   EdgeOffset work_per_evaluation() const override { return m_rows; }
+  EdgeOffset gathers_per_evaluation() const override { return 0; }  // rows only: thread_choice
   const char* name() const override { return "rank-one"; }
   const std::vector<double>& local_fields() const override { return m_y; }
 

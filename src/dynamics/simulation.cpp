@@ -467,8 +467,9 @@ SimulationResult simulate(const DistributedNetwork& network, const std::vector<d
     throw ParameterError("rotor node", std::to_string(params.rotor_node),
                          "0 <= node < N = " + std::to_string(network.global_size()));
   }
-  const auto work = static_cast<std::int64_t>(force.work_per_evaluation()) *
-                    static_cast<std::int64_t>(lanes(params));
+  const std::int64_t work = step_work(static_cast<std::int64_t>(force.gathers_per_evaluation()),
+                                      static_cast<std::int64_t>(network.local_size()),
+                                      static_cast<std::int64_t>(lanes(params)));
   const ThreadCountScope threads(params.threads > 0 ? params.threads
                                                     : default_threads(work, omp_get_max_threads()));
   SimulationResult result;
@@ -481,6 +482,7 @@ SimulationResult simulate(const DistributedNetwork& network, const std::vector<d
     result = run.execute();
   }
   result.threads = omp_get_max_threads();
+  result.thread_rule_work = work;
   result.lanes = static_cast<int>(lanes(params));
   return result;
 }

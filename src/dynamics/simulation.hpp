@@ -56,6 +56,7 @@ struct SimulationResult {
   double integration_seconds = 0.0;   ///< the stepping loop only (no set-up, no I/O)
   EdgeOffset nnz_per_evaluation = 0;  ///< summed over ranks
   int threads = 1;                    ///< OpenMP threads per rank the stepping used
+  std::int64_t thread_rule_work = 0;  ///< this rank's work per step for the thread rule
   int lanes = 1;                      ///< replicas integrated side by side per step (lanes(params))
   std::string force_name;
   bool resumed = false;

@@ -3,8 +3,8 @@
 // parallel region (team.hpp) with a few barriers; a thread that joins a step of little work costs
 // more at those barriers than it computes, and far more when OMP_WAIT_POLICY=PASSIVE puts waiting
 // threads to sleep (a futex wake at every barrier). So the default gives each thread at least
-// work_per_thread(policy) stored entries x replicas of a force evaluation (measured:
-// bench/thread_rule.sh, README "Threads").
+// work_per_thread(policy) of a step's work: gathers plus each row's own work, times the replicas
+// (step_work; measured: bench/thread_rule.sh, README "Threads").
 #include <cstdint>
 
 namespace hmfnet {
@@ -15,14 +15,35 @@ enum class WaitPolicy { spinning, passive };
 /// The policy of this process: PASSIVE when OMP_WAIT_POLICY says so (any case), else spinning.
 WaitPolicy wait_policy_from_environment();
 
-/// Stored entries x replicas per thread of a step. Measured on the 2-core development machine
-/// with one region per step (one idle run each, ER, `hmfnet simulate --threads 1|2`):
-///  - spinning (unset, ACTIVE): 2 threads 0.8x of 1 at 500 entries (N = 100, d = 5), 1.1-1.2x at
-///    3000 (N = 300, d = 10), 1.4-1.5x at 10^4, 1.7-1.8x at 10^6: a second thread from 3000 on;
-///  - PASSIVE: 2 threads 0.1-0.2x of 1 at 500-3000 entries, 0.6x at 10^4, 1.4-1.5x at 10^5 and
-///    at 10^6: a second thread from 5 x 10^4 on (between the last loss and the first gain).
-inline constexpr std::int64_t k_work_per_thread_spinning = 1'500;
-inline constexpr std::int64_t k_work_per_thread_passive = 25'000;
+/// Work (step_work) per thread of a step. Measured on the 2-core development machine, session 19
+/// (one idle run, `bash bench/thread_rule.sh`: ER and the complete graph, 2 threads against 1;
+/// work in parentheses):
+///  - spinning (unset, ACTIVE): 0.3x at ER N = 100, d = 5 (4.5 10^3), 0.6x at N = 300, d = 10
+///    (1.5 10^4), 1.0x at N = 1000, d = 10 (5 10^4) and on K_N N = 1000 (4 10^4), 0.9x on K_N
+///    N = 200 with 16 replicas (1.3 10^5), 1.4-1.9x from 5 10^5 on (ER N = 10^4, d = 10; K_N
+///    N = 1600 with 16 replicas, N = 2 10^4): a second thread from 2 10^5 on;
+///  - PASSIVE: 0.6-0.7x at 5 10^5 .. 10^6 (ER N = 10^4, d = 10; K_N N = 2 10^4; K_N N = 1600 with
+///    16 replicas), 1.08x and 1.27x (two runs) at ER N = 10^4, d = 100 (1.4 10^6), 1.4-1.9x from
+///    4 10^6 on (K_N N = 10^5, ER N = 10^5, d = 20 and 100): a second thread from 1.2 10^6 on.
+///    The margin below is wider than the work says: k_row_work is a sparse row's cost, and a
+///    rank-one row with 16 replicas costs ~0.6 of it, so K_N N = 1600's 1.02 10^6 is ~6 10^5.
+inline constexpr std::int64_t k_work_per_thread_spinning = 100'000;
+inline constexpr std::int64_t k_work_per_thread_passive = 600'000;
+
+/// A row's own work in a step, in gathers of the sparse kernel (one stored entry's [cos, sin]
+/// read and multiply-add): the row's sin/cos, kick and drift and its terms of the ordered sums
+/// (and, on the complete graph, the rank-one force's two passes over the rows). Without it the
+/// rule counted stored entries only, so a sparse network of low degree and the complete graph
+/// (no stored entries: its rows were counted as entries) were given too little work; and since
+/// the vectorised sin/cos the same work takes less time, so the thresholds above grew with it.
+/// Measured with one thread (bench/thread_rule.sh, session 19): ER N = 10^4 takes 239 us a step at
+/// d = 10 and 654 us at d = 100, so a gather costs 0.46 ns and a row 19 ns besides its gathers,
+/// ~41 gathers; ER N = 10^5, d = 20 says 19 ns too; the complete graph takes 18 ns a row with one
+/// replica (N = 2 10^4 and 10^5) and 10.7 ns a row and replica with 16 (N = 1600).
+inline constexpr std::int64_t k_row_work = 40;
+
+/// The rule's work of one step on this rank: (gathers + k_row_work x rows) x replica lanes.
+std::int64_t step_work(std::int64_t gathers, std::int64_t rows, std::int64_t lanes);
 
 /// floor(work / work per thread of `policy`) threads, at least 1 and at most `available` (>= 1).
 int default_threads(std::int64_t work, int available,

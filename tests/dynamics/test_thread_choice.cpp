@@ -5,11 +5,14 @@
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "core/error.hpp"
 #include "dynamics/network_force.hpp"
+#include "dynamics/rank_one_force.hpp"
 #include "dynamics/simulation.hpp"
 #include "dynamics/thread_choice.hpp"
+#include "network/complete_graph.hpp"
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
 #include "support/simulation_runs.hpp"
@@ -18,24 +21,38 @@ using namespace hmfnet;
 
 TEST_CASE("The default thread count follows the work per step and the wait policy", "[threads]") {
   constexpr auto spinning = WaitPolicy::spinning, passive = WaitPolicy::passive;
-  // The karate club (156 stored entries): one thread, however many are offered, however threads
-  // wait.
-  CHECK(default_threads(156, 2, spinning) == 1);
-  CHECK(default_threads(156, 64, passive) == 1);
-  // ER N = 100, d = 5 (500 entries), where 2 spinning threads ran at 0.8x of one: one.
-  CHECK(default_threads(500, 2, spinning) == 1);
-  // ER N = 300, d = 10 (3000 entries): two when spinning (1.1-1.2x), one when passive (0.2x).
-  CHECK(default_threads(3'000, 2, spinning) == 2);
-  CHECK(default_threads(3'000, 2, passive) == 1);
-  // ER N = 1000, d = 10 (10^4 entries): two when spinning (1.4-1.5x), one when passive (0.6x).
-  CHECK(default_threads(10'000, 2, spinning) == 2);
-  CHECK(default_threads(10'000, 2, passive) == 1);
-  // ER N = 10^4, d = 10 (10^5 entries), where 2 passive threads ran 1.5x faster: two.
-  CHECK(default_threads(100'000, 2, passive) == 2);
-  // ER N = 10^6, degree 100 (10^8 entries): every thread offered, and never more.
-  CHECK(default_threads(100'000'000, 2, passive) == 2);
-  CHECK(default_threads(100'000'000, 1, spinning) == 1);
-  CHECK(default_threads(100'000'000, 16, spinning) == 16);
+  // Each row's own work counts k_row_work gathers, once per replica.
+  CHECK(step_work(0, 0, 8) == 0);
+  CHECK(step_work(1'000'000, 10'000, 1) == 1'000'000 + 10'000 * k_row_work);
+  CHECK(step_work(500, 100, 16) == 16 * (500 + 100 * k_row_work));
+  // The networks of bench/thread_rule.sh (thread_choice.hpp: 2 threads against 1 there).
+  // The karate club (156 stored entries, N = 34): one thread, however many are offered.
+  CHECK(default_threads(step_work(156, 34, 1), 2, spinning) == 1);
+  CHECK(default_threads(step_work(156, 34, 1), 64, passive) == 1);
+  // ER N = 100, d = 5 and N = 300, d = 10 (0.3x, 0.6x); N = 1000, d = 10 (1.0x): one.
+  CHECK(default_threads(step_work(500, 100, 1), 2, spinning) == 1);
+  CHECK(default_threads(step_work(3'000, 300, 1), 2, spinning) == 1);
+  CHECK(default_threads(step_work(10'000, 1'000, 1), 2, spinning) == 1);
+  // ER N = 10^4, d = 10: two when spinning (1.9x), one when passive (0.7x).
+  CHECK(default_threads(step_work(100'000, 10'000, 1), 2, spinning) == 2);
+  CHECK(default_threads(step_work(100'000, 10'000, 1), 2, passive) == 1);
+  // ER N = 10^4, d = 100: two under either policy (1.08x and 1.27x in two passive runs).
+  CHECK(default_threads(step_work(1'000'000, 10'000, 1), 2, passive) == 2);
+  // ER N = 10^5, d = 20: two under either policy (1.6x when passive).
+  CHECK(default_threads(step_work(2'000'000, 100'000, 1), 2, passive) == 2);
+  // The complete graph (no gathers): N = 200 with 16 replicas, one (0.9x); N = 1600 with 16 and
+  // N = 2 10^4 with one, two when spinning (1.4x, 1.9x) and one when passive (0.6x, 0.65x);
+  // N = 10^5, two under either policy (1.4x when passive).
+  CHECK(default_threads(step_work(0, 200, 16), 2, spinning) == 1);
+  CHECK(default_threads(step_work(0, 1'600, 16), 2, spinning) == 2);
+  CHECK(default_threads(step_work(0, 1'600, 16), 2, passive) == 1);
+  CHECK(default_threads(step_work(0, 20'000, 1), 2, spinning) == 2);
+  CHECK(default_threads(step_work(0, 20'000, 1), 2, passive) == 1);
+  CHECK(default_threads(step_work(0, 100'000, 1), 2, passive) == 2);
+  // ER N = 10^6, degree 100: every thread offered, and never more.
+  CHECK(default_threads(step_work(100'000'000, 1'000'000, 1), 2, passive) == 2);
+  CHECK(default_threads(step_work(100'000'000, 1'000'000, 1), 1, spinning) == 1);
+  CHECK(default_threads(step_work(100'000'000, 1'000'000, 1), 16, spinning) == 16);
   // One thread per work-per-thread of the policy, at the boundary.
   CHECK(default_threads(2 * k_work_per_thread_passive - 1, 8, passive) == 1);
   CHECK(default_threads(2 * k_work_per_thread_passive, 8, passive) == 2);
@@ -65,10 +82,27 @@ TEST_CASE("A run reports the threads it used: the rule's, or the count it was gi
   NetworkForce force(d);
   SimulationParameters p = test::short_run();
   const int offered = omp_get_max_threads();
-  CHECK(simulate(d, net.degrees(), force, p).threads == 1);  // ~2000 entries: one thread
-  CHECK(omp_get_max_threads() == offered);                   // restored after the run
+  const SimulationResult r = simulate(d, net.degrees(), force, p);
+  CHECK(r.threads == 1);  // ~2000 entries and 200 rows: one thread
+  CHECK(r.thread_rule_work == step_work(static_cast<std::int64_t>(force.work_per_evaluation()),
+                                        static_cast<std::int64_t>(d.local_size()), 1));
+  CHECK(omp_get_max_threads() == offered);  // restored after the run
   p.threads = 2;
   CHECK(simulate(d, net.degrees(), force, p).threads == 2);
   p.threads = -1;
   CHECK_THROWS_AS(validate(p), ParameterError);
+}
+
+TEST_CASE("The rank-one force gives the rule its rows only, once per replica", "[threads]") {
+  const CompleteGraph graph = CompleteGraph::make(300, false);
+  const DistributedNetwork d(graph);
+  RankOneForce force(complete_graph_structure(graph), d.first_row(), d.local_size());
+  CHECK(force.gathers_per_evaluation() == 0);
+  SimulationParameters p = test::short_run();
+  p.K = {1.0};  // K lambda / N = 1: the all-to-all HMF's scale
+  p.replicas = {{6.0, 1.0, 11}, {6.0, 1.0, 12}, {6.0, 1.0, 13}};
+  const SimulationResult r =
+      simulate(d, std::vector<double>(std::size_t{300}, graph.degree()),
+               force, p);
+  CHECK(r.thread_rule_work == step_work(0, static_cast<std::int64_t>(d.local_size()), 3));
 }
