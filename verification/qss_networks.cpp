@@ -20,11 +20,11 @@
 //     ci:   N = 200, d = 20, 50, 100;   full: N = 400, d = 20, 50, 100, 200.
 //   16 replicas per scene in one pass (K_N at full scale: 64, because a single K_N life spreads
 //   over a factor ~3 between replicas and the outlives check below compares K_N's N = 400 life
-//   with d = 200's: with 16 its se was 28%, session 18), leap-frog h = 0.1 (the energy error is reported), R every
-//   time unit, T = 0.6 N^1.7 time units (qss_lifetime's budget: 3.5 to 5 K_N lives), on the
-//   networks capped at that of N = 200 (ci, 4900) or 400 (full, 16,000): a network QSS that
-//   outlived the budget would be censored, and the first check below would fail (through the
-//   passage to R_th: half way to the run's own late level is reached by almost any run).
+//   with d = 200's: with 16 its se was 28%, session 18), leap-frog h = 0.1 (the energy error is
+//   reported), R every time unit, T = 0.6 N^1.7 time units (qss_lifetime's budget: 3.5 to 5 K_N
+//   lives), on the networks capped at that of N = 200 (ci, 4900) or 400 (full, 16,000): a network
+//   QSS that outlived the budget would be censored, and the first check below would fail (through
+//   the passage to R_th: half way to the run's own late level is reached by almost any run).
 // Life: the replica mean R(t), smoothed by a running mean over 50 time units, first passes half
 //   way from its initial level (t in (0, 50]) to its late level (the last fifth of the run): the
 //   time to relax to wherever the run settles (support/passage_time.hpp; se from 200 bootstrap
@@ -276,7 +276,7 @@ void check_outlives(ClaimCheck& check, const std::string& at_n, const Life& dens
 struct Plan {
   std::vector<NodeIndex> network_sizes, complete_sizes, degrees;
   NodeIndex sweep_n = 0;
-  NodeIndex budget_cap = 0;  ///< the networks' T stops growing past K_N's at this N
+  NodeIndex budget_cap = 0;           ///< the networks' T stops growing past K_N's at this N
   int complete_replicas = kReplicas;  ///< K_N's lives spread most (header: the outlives check)
 };
 

@@ -102,7 +102,6 @@ TEST_CASE("The rank-one force gives the rule its rows only, once per replica", "
   p.K = {1.0};  // K lambda / N = 1: the all-to-all HMF's scale
   p.replicas = {{6.0, 1.0, 11}, {6.0, 1.0, 12}, {6.0, 1.0, 13}};
   const SimulationResult r =
-      simulate(d, std::vector<double>(std::size_t{300}, graph.degree()),
-               force, p);
+      simulate(d, std::vector<double>(std::size_t{300}, graph.degree()), force, p);
   CHECK(r.thread_rule_work == step_work(0, static_cast<std::int64_t>(d.local_size()), 3));
 }
