@@ -8,7 +8,10 @@
 //    the same flags), one step of one replica;
 //  - PlainCsrStep: the textbook loop a user would write first: two CSR products over separate
 //    cos and sin arrays, then the kick and drift (1 thread);
-//  - IndexStreamFloor: reading the int32 column array once (the memory floor of any pass).
+//  - IndexStreamFloor: reading the int32 column array once (the memory floor of any pass);
+//  - RankOneStep/N/replicas/threads/self_loops: one leap-frog step on K_N held implicitly, the
+//    O(N) rank-one force (the complete-graph drivers of issue #17); rotors x replicas x steps
+//    per second.
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
@@ -18,6 +21,8 @@
 #include "cached_network.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/network_force.hpp"
+#include "dynamics/rank_one_force.hpp"
+#include "network/complete_graph.hpp"
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
 
@@ -25,23 +30,40 @@ using namespace hmfnet;
 
 namespace {
 
-void LeapFrogStep(benchmark::State& state) {
-  const Network& net = bench::cached_erdos_renyi(static_cast<NodeIndex>(state.range(0)),
-                                                 static_cast<double>(state.range(1)));
-  const auto replicas = static_cast<int>(state.range(2));
-  omp_set_num_threads(static_cast<int>(state.range(3)));
-  const DistributedNetwork d(net);
-  NetworkForce force(d, state.range(4) == 0 ? ForcePrecision::float64 : ForcePrecision::float32);
+// Leap-frog steps of `replicas` replicas (momenta around omega with spread sigma0, coupling K)
+// for as long as the benchmark asks; `work` (per replica and step) gives the counter `counter`.
+void leapfrog_steps(benchmark::State& state, const DistributedNetwork& d, CouplingForce& force,
+                    int replicas, double omega, double sigma0, double h, double K,
+                    const char* counter, double work) {
   std::vector<InitialCondition> ic;
-  for (int b = 0; b < replicas; ++b) ic.push_back({6.0, 1.0, static_cast<std::uint64_t>(b)});
+  for (int b = 0; b < replicas; ++b) ic.push_back({omega, sigma0, static_cast<std::uint64_t>(b)});
   RotorState s = initial_state(d.first_row(), d.local_size(), ic);
   ForceEvaluation f(force);
   f.update(s);
   const LeapFrog lf;
-  const std::vector<double> K(static_cast<std::size_t>(replicas), 50.0);
-  for (auto _ : state) lf.step(s, 0.01, K, f);
-  state.counters["nnz_steps_per_s"] = benchmark::Counter(
-      static_cast<double>(net.nnz()) * replicas, benchmark::Counter::kIsIterationInvariantRate);
+  const std::vector<double> Ks(static_cast<std::size_t>(replicas), K);
+  for (auto _ : state) lf.step(s, h, Ks, f);
+  state.counters[counter] =
+      benchmark::Counter(work * replicas, benchmark::Counter::kIsIterationInvariantRate);
+}
+
+void LeapFrogStep(benchmark::State& state) {
+  const Network& net = bench::cached_erdos_renyi(static_cast<NodeIndex>(state.range(0)),
+                                                 static_cast<double>(state.range(1)));
+  omp_set_num_threads(static_cast<int>(state.range(3)));
+  const DistributedNetwork d(net);
+  NetworkForce force(d, state.range(4) == 0 ? ForcePrecision::float64 : ForcePrecision::float32);
+  leapfrog_steps(state, d, force, static_cast<int>(state.range(2)), 6.0, 1.0, 0.01, 50.0,
+                 "nnz_steps_per_s", static_cast<double>(net.nnz()));
+}
+
+void RankOneStep(benchmark::State& state) {
+  const CompleteGraph graph = CompleteGraph::make(state.range(0), state.range(3) != 0);
+  omp_set_num_threads(static_cast<int>(state.range(2)));
+  const DistributedNetwork d(graph);
+  RankOneForce force(complete_graph_structure(graph), d.first_row(), d.local_size());
+  leapfrog_steps(state, d, force, static_cast<int>(state.range(1)), 0.0, 0.6, 0.1, 1.0,
+                 "rotor_steps_per_s", static_cast<double>(graph.n));
 }
 
 void PlainCsrStep(benchmark::State& state) {
@@ -134,6 +156,11 @@ BENCHMARK(YardstickStep)
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(PlainCsrStep)->Args({10000, 100})->Unit(benchmark::kMillisecond);
+// Args: N, replicas, threads, self-loops (1: A = 1 1^T, the Antoni-Ruffo HMF; 0: K_N).
+BENCHMARK(RankOneStep)
+    ->ArgsProduct({{2000, 20000}, {1, 16}, {1, 2}, {0, 1}})
+    ->UseRealTime()
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK(IndexStreamFloor)->Args({10000, 100})->Unit(benchmark::kMillisecond);
 BENCHMARK(LeapFrogStep)
     ->Args({25000, 5000, 1, 1, 0})

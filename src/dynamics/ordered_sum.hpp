@@ -24,6 +24,20 @@ class OrderedColumnSums {
   /// only after a later barrier (the end of the region at the latest).
   void sum(const double* values, double* out);
 
+  // Fused use (a force that forms its values and sums them in one pass, without storing them):
+  // in a worksharing loop over blocks(), the caller writes each block's sums into
+  // partial(block), formed exactly as sum() forms them (from 0, rows first_row(block) ..
+  // first_row(block + 1) - 1 in order, each column on its own), then add_blocks(out) on the
+  // master thread after that loop's barrier. The same bits as sum() over the stored values.
+  static constexpr std::size_t kBlockRows = 2048;
+  std::size_t blocks() const { return (m_rows + kBlockRows - 1) / kBlockRows; }
+  std::size_t first_row(std::size_t block) const {
+    return block * kBlockRows < m_rows ? block * kBlockRows : m_rows;
+  }
+  double* partial(std::size_t block) { return m_partial.data() + block * m_width; }
+  /// out[b] = the block sums of column b added in block order. Master thread (or outside a team).
+  void add_blocks(double* out) const;
+
  private:
   std::size_t m_rows = 0;
   std::size_t m_width = 0;

@@ -5,7 +5,10 @@
 //   y_n = sum_m A_nm e^{i theta_m} = a_n Z - [no diagonal] a_n^2 e^{i theta_n},
 //   Z = sum_m a_m e^{i theta_m}  (one global sum, reduced over ranks),
 // and g, |y_n| and the coupling term follow as in the sparse kernel. Chosen automatically when
-// detect_rank_one finds the structure, and checked against the sparse path in tests.
+// detect_rank_one finds the structure, and checked against the sparse path in tests. Two passes
+// over the rows after the sin/cos, each summing as it goes (Z; then g with the order and
+// coupling sums), the same bits as storing the terms and summing them (tests/dynamics/
+// test_rank_one_force.cpp).
 #include <optional>
 #include <vector>
 
@@ -39,7 +42,8 @@ class RankOneForce : public CouplingForce {
   EdgeOffset work_per_evaluation() const override { return m_rows; }
   EdgeOffset gathers_per_evaluation() const override { return 0; }  // rows only: thread_choice
   const char* name() const override { return "rank-one"; }
-  const std::vector<double>& local_fields() const override { return m_y; }
+  /// Formed from the last evaluation on first call after it (outside a team: not thread-safe).
+  const std::vector<double>& local_fields() const override;
 
  private:
   RankOneStructure m_structure;
@@ -47,13 +51,10 @@ class RankOneForce : public CouplingForce {
   NodeIndex m_rows;
   double m_inverse_n;
   std::vector<double> m_cs;  // rows x replicas x [cos, sin]: once per evaluation
-  // rows x replicas x 2: [a cos, a sin] summed into Z, then (Z reduced) [|y_n|,
-  // Re(e^{-i theta_n} y_n)] summed into the order and coupling terms. One array for both: at
-  // N = 10^6 and 8 replicas a second one was 128 MB, 15% of the run's peak memory.
-  std::vector<double> m_scratch;
-  std::vector<double> m_z;  // replicas x [Re Z, Im Z]
+  std::vector<double> m_z;   // replicas x [Re Z, Im Z]
   OrderedColumnSums m_z_sums;
-  std::vector<double> m_y;          // rows x replicas x [Re y, Im y]
+  mutable std::vector<double> m_y;  // rows x replicas x [Re y, Im y], formed on demand
+  mutable bool m_y_current = false;
   std::vector<double> m_term_sums;  // replicas x [sum |y_n|, sum Re(e^{-i theta_n} y_n)]
   OrderedColumnSums m_sums;
 };

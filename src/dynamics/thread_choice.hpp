@@ -33,13 +33,16 @@ inline constexpr std::int64_t k_work_per_thread_passive = 600'000;
 /// A row's own work in a step, in gathers of the sparse kernel (one stored entry's [cos, sin]
 /// read and multiply-add): the row's sin/cos, kick and drift and its terms of the ordered sums
 /// (and, on the complete graph, the rank-one force's two passes over the rows). Without it the
-/// rule counted stored entries only, so a sparse network of low degree and the complete graph
-/// (no stored entries: its rows were counted as entries) were given too little work; and since
-/// the vectorised sin/cos the same work takes less time, so the thresholds above grew with it.
+/// rule counted stored entries only, which undercounted a step of a sparse network of low degree
+/// and of the complete graph (no stored entries: its rows were counted as entries); and since the
+/// vectorised sin/cos a step of the same work takes less time, so the thresholds above grew.
 /// Measured with one thread (bench/thread_rule.sh, session 19): ER N = 10^4 takes 239 us a step at
 /// d = 10 and 654 us at d = 100, so a gather costs 0.46 ns and a row 19 ns besides its gathers,
-/// ~41 gathers; ER N = 10^5, d = 20 says 19 ns too; the complete graph takes 18 ns a row with one
-/// replica (N = 2 10^4 and 10^5) and 10.7 ns a row and replica with 16 (N = 1600).
+/// ~41 gathers; ER N = 10^5, d = 20 says 19 ns too; the complete graph took 18 ns a row with one
+/// replica (N = 2 10^4 and 10^5) and 10.7 ns a row and replica with 16 (N = 1600). Since the
+/// rank-one force's fused passes (session 20) those are ~9 and ~8 ns, so the rule counts a
+/// rank-one row as about twice its cost; bench/thread_rule.sh's complete-graph rows, re-run then,
+/// kept the default within 1.2x of the best count (README "Threads").
 inline constexpr std::int64_t k_row_work = 40;
 
 /// The rule's work of one step on this rank: (gathers + k_row_work x rows) x replica lanes.
