@@ -19,9 +19,16 @@ rate() {  # policy, network, T, extra args... -> "rate threads work"
   shift 3
   local env=(env -u OMP_WAIT_POLICY -u OMP_NUM_THREADS)
   [[ $policy != unset ]] && env+=(OMP_WAIT_POLICY="$policy")
-  "${env[@]}" "$hmfnet" simulate "$net" --K-over-Kc 1.5 --T "$T" --transient 0 --h 0.01 \
-    --seed 1 --record-stride 1000000 --json --quiet "$@" 2>/dev/null |
-    python3 -c "import json,sys; d=json.load(sys.stdin); print(d['nnz_steps_per_second']/1e9, d['threads'], d.get('thread_rule_work', 0))"
+  local out
+  # A failed run stops the script with hmfnet's own message (rate runs in a process
+  # substitution: its exit ends that subshell, and the caller's read then fails under set -e).
+  if ! out=$("${env[@]}" "$hmfnet" simulate "$net" --K-over-Kc 1.5 --T "$T" --transient 0 \
+    --h 0.01 --seed 1 --record-stride 1000000 --json --quiet "$@" 2>"$tmp/stderr"); then
+    echo "bench/thread_rule.sh: hmfnet simulate $net $* (OMP_WAIT_POLICY $policy) failed:" >&2
+    cat "$tmp/stderr" >&2
+    exit 1
+  fi
+  python3 -c "import json,sys; d=json.load(sys.stdin); print(d['nnz_steps_per_second']/1e9, d['threads'], d.get('thread_rule_work', 0))" <<<"$out"
 }
 
 row() {  # label, network, T, extra args...
@@ -45,7 +52,8 @@ for spec in "100 5 4000" "300 10 4000" "1000 10 2000" "10000 10 200" "10000 100 
   "100000 20 10" "100000 100 2"; do
   read -r n d T <<<"$spec"
   net="$tmp/er_${n}_${d}.h5"
-  "$hmfnet" generate er --n "$n" --mean-degree "$d" --seed 1 -o "$net" 2>/dev/null
+  "$hmfnet" generate er --n "$n" --mean-degree "$d" --seed 1 -o "$net" 2>"$tmp/stderr" ||
+    { cat "$tmp/stderr" >&2; exit 1; }
   row "ER N=$n d=$d" "$net" "$T"
 done
 # The complete graph (O(N) rank-one force): N, replicas, T; about 2e8 rows x replicas x steps
@@ -54,6 +62,7 @@ for spec in "100 1 20000" "200 16 600" "1600 16 80" "1000 1 2000" "20000 1 100" 
   "100000 1 20"; do
   read -r n b T <<<"$spec"
   net="$tmp/complete_${n}.h5"
-  [[ -f $net ]] || "$hmfnet" generate complete --n "$n" -o "$net" 2>/dev/null
+  [[ -f $net ]] || "$hmfnet" generate complete --n "$n" -o "$net" 2>"$tmp/stderr" ||
+    { cat "$tmp/stderr" >&2; exit 1; }
   row "K_N N=$n B=$b" "$net" "$T" --replicas "$b"
 done

@@ -78,6 +78,7 @@ void RankOneForce::prepare(const RotorState& state, std::vector<double>& g, Forc
   m_z_sums.prepare(static_cast<std::size_t>(state.rows), 2 * state.replicas);
   g.resize(cells);
   m_y.resize(2 * cells);
+  m_y_current = false;
   m_term_sums.resize(2 * w);
   m_sums.prepare(static_cast<std::size_t>(state.rows), 2 * state.replicas);
   sums.order.resize(w);

@@ -40,9 +40,10 @@ inline constexpr std::int64_t k_work_per_thread_passive = 600'000;
 /// d = 10 and 654 us at d = 100, so a gather costs 0.46 ns and a row 19 ns besides its gathers,
 /// ~41 gathers; ER N = 10^5, d = 20 says 19 ns too; the complete graph took 18 ns a row with one
 /// replica (N = 2 10^4 and 10^5) and 10.7 ns a row and replica with 16 (N = 1600). Since the
-/// rank-one force's fused passes (session 20) those are ~9 and ~8 ns, so the rule counts a
-/// rank-one row as about twice its cost; bench/thread_rule.sh's complete-graph rows, re-run then,
-/// kept the default within 1.2x of the best count (README "Threads").
+/// rank-one force's fused passes (session 20, another machine) those are ~9 and ~8 ns, so the
+/// rule counts a rank-one row as about twice its cost; bench/thread_rule.sh's complete-graph rows,
+/// re-run then, kept the default within 1.2x of the best count except in two rows where default
+/// and --threads 1 ran the same single thread (noise; README "Threads").
 inline constexpr std::int64_t k_row_work = 40;
 
 /// The rule's work of one step on this rank: (gathers + k_row_work x rows) x replica lanes.
