@@ -41,12 +41,16 @@ def _from_scipy(A, symmetrize=False, source="scipy matrix"):
     InputError unless ``symmetrize=True``, which uses (A + A^T)/2 with a warning (the
     antisymmetric part does not act on the dynamics, eq:hamiltonianNetworkCase). Explicit zeros
     are dropped with a warning; a duplicate entry is refused, as the file readers refuse it.
-    Entry k of ``A.tocoo()`` is named "SOURCE:k+1" in messages."""
+    Weights must be real: a complex matrix raises InputError, as a Matrix Market file of field
+    'complex' does. Entry k of ``A.tocoo()`` is named "SOURCE:k+1" in messages."""
     import scipy.sparse as sp
 
     coo = sp.coo_matrix(A)
     if coo.ndim != 2 or coo.shape[0] != coo.shape[1]:
         raise ValueError(f"{source}: shape {coo.shape} is not square (allowed: N x N)")
+    if coo.dtype.kind == "c":
+        # Casting to float64 would drop the imaginary part without a word.
+        raise InputError(f"{source}: dtype '{coo.dtype}' is not supported (bool, integer, real)")
     try:
         net = Network._from_entries(coo.shape[0], _np.asarray(coo.row, dtype=_np.int64),
                                     _np.asarray(coo.col, dtype=_np.int64),
@@ -60,10 +64,16 @@ def _from_scipy(A, symmetrize=False, source="scipy matrix"):
 def _from_networkx(G, weight=None, symmetrize=False):
     """A network from a networkx graph, nodes in ``G.nodes`` order (``list(G)[n]`` is node n).
     ``weight=None`` links every edge with weight 1; ``weight="w"`` reads that edge attribute
-    (missing: 1). A directed graph is a non-symmetric matrix: refused unless ``symmetrize``."""
+    (missing: 1). A directed graph is a non-symmetric matrix: refused unless ``symmetrize``.
+    A self-loop of weight w is A_nn = w, as the file readers store it; the weights of a
+    multigraph's parallel edges are summed (networkx's own matrix)."""
     import networkx as nx
 
     A = nx.to_scipy_sparse_array(G, weight=weight, format="coo", dtype=float)
+    # For an undirected graph networkx writes a self-loop as the entries w, w and -w on the
+    # diagonal (it symmetrises, then subtracts the doubled diagonal) and a multigraph's parallel
+    # edges as repeated entries: the sums are the matrix it means.
+    A.sum_duplicates()
     return _from_scipy(A, symmetrize=symmetrize, source="networkx graph")
 
 
@@ -83,8 +93,8 @@ Network.to_scipy = _to_scipy
 def read_network(path, symmetrize=False, index_base=0, nodes=0):
     """Reads a network file (.h5, .mtx, edge list) as the CLI does (FILE:LINE errors raise
     InputError); the options are the CLI's --symmetrize, --index-base and --nodes."""
-    return _warn(_hmfnet._read_network(
-        str(path), _tokens(symmetrize=symmetrize, index_base=index_base, nodes=nodes)))
+    return _warn(_hmfnet._read_network(str(path), _tokens(
+        "read_network", symmetrize=symmetrize, index_base=index_base, nodes=nodes)))
 
 
 def _per_K_arrays(points, fields):
@@ -94,7 +104,8 @@ def _per_K_arrays(points, fields):
 def spectrum(network, sigma0=None, tolerance=None, lambda2=None):
     """`hmfnet spectrum --json`: lambda, the Perron vector's summaries, rho, G, lambda_2 or its
     bounds, structure, warnings, and K_c when sigma0 is given."""
-    return _hmfnet._spectrum(network, _tokens(sigma0=sigma0, tolerance=tolerance, lambda2=lambda2))
+    return _hmfnet._spectrum(network, _tokens("spectrum", sigma0=sigma0, tolerance=tolerance,
+                                              lambda2=lambda2))
 
 
 def theory(network, sigma0, K=None, K_over_Kc=None, momenta=None, tolerance=None):
@@ -103,7 +114,7 @@ def theory(network, sigma0, K=None, K_over_Kc=None, momenta=None, tolerance=None
     fields (K, K_over_Kc, R, R_onset, sigma2, status, linearly_stable, iterations, residual) are
     also returned as numpy arrays at the top level; raises ConvergenceError naming every K
     whose solve failed."""
-    out = _hmfnet._theory(network, _tokens(sigma0=sigma0, K=K, K_over_Kc=K_over_Kc,
+    out = _hmfnet._theory(network, _tokens("theory", sigma0=sigma0, K=K, K_over_Kc=K_over_Kc,
                                            momenta=momenta, tolerance=tolerance))
     out.update(_per_K_arrays(out["points"], ["K", "K_over_Kc", "R", "R_onset", "sigma2", "status",
                                              "linearly_stable", "iterations", "residual"]))
@@ -124,9 +135,9 @@ def simulate(network, *, seed, K=None, K_over_Kc=None, K_sweep=None, sigma0=None
     file (read it with read_run). The GIL is released while it integrates; Ctrl-C stops the run
     at the next record and raises KeyboardInterrupt (with ``checkpoint``, resumable)."""
     out = _hmfnet._simulate(network, _tokens(
-        seed=seed, K=K, K_over_Kc=K_over_Kc, K_sweep=K_sweep, sigma0=sigma0, omega=omega,
-        momenta=momenta, h=h, T=T, transient=transient, replicas=replicas, threads=threads,
-        integrator=integrator, precision=precision, force=force, output=output,
+        "simulate", seed=seed, K=K, K_over_Kc=K_over_Kc, K_sweep=K_sweep, sigma0=sigma0,
+        omega=omega, momenta=momenta, h=h, T=T, transient=transient, replicas=replicas,
+        threads=threads, integrator=integrator, precision=precision, force=force, output=output,
         checkpoint=checkpoint, resume=resume, node_data=node_data, rotor_node=rotor_node,
         phase_bins=phase_bins, restart_each_K=restart_each_K,
         K_across_replicas=K_across_replicas, record_stride=record_stride,

@@ -1,14 +1,34 @@
 """Keyword arguments to the CLI's tokens: ``K_over_Kc=[1, 2]`` -> ``--K-over-Kc 1,2``; True
-flags -> ``--flag``; None and False -> nothing (the CLI's default). Floats are written with
-repr, which reads back to the same double."""
+flags -> ``--flag``; None, and False for a flag, -> nothing (the CLI's default). Floats are
+written with repr, which reads back to the same double.
+
+A bool is a number to Python (True == 1) but not to the CLI: only the options that the CLI
+declares with add_flag (src/cli/command_options.cpp) take one; any other keyword given a bool
+raises TypeError, so that ``T=False`` does not silently mean the default T and ``seed=True``
+does not become a garbled command line."""
 import numbers
 
 import numpy as np
 
+# The CLI's add_flag options that a Python function exposes as keywords.
+FLAGS = frozenset({"symmetrize", "self_loops", "resume", "node_data", "restart_each_K",
+                   "K_across_replicas"})
+
+# Options whose value is a word or a path (the rest take numbers), for the TypeError's wording.
+WORDS = frozenset({"momenta", "lambda2", "K_sweep", "output", "checkpoint", "integrator", "force",
+                   "precision", "link"})
+
+
+def _is_bool(value):
+    return isinstance(value, (bool, np.bool_))
+
+
+def _not_a_bool(where, name, shown):
+    kind = "a string" if name in WORDS else "a number"
+    return TypeError(f"{where}: {name}={shown!r}: a bool is not {kind} ({name} takes {kind})")
+
 
 def _text(value):
-    if isinstance(value, (bool, np.bool_)):
-        raise TypeError("a flag inside a list")
     if isinstance(value, numbers.Integral):
         return str(int(value))
     if isinstance(value, numbers.Real):
@@ -16,15 +36,28 @@ def _text(value):
     return str(value)
 
 
-def tokens(**options):
+def _flag(where, name, value):
+    if not _is_bool(value):
+        raise TypeError(f"{where}: {name}={value!r}: {name} is a flag (it takes True or False)")
+    return ["--" + name.replace("_", "-")] if value else []
+
+
+def tokens(where, **options):
+    """The tokens of ``options`` for the CLI's grammar; ``where`` (the calling function's name)
+    starts every TypeError's message."""
     out = []
     for name, value in options.items():
-        if value is None or value is False:
+        if value is None:
+            continue
+        if name in FLAGS:
+            out += _flag(where, name, value)
             continue
         option = "--" + name.replace("_", "-")
-        if value is True:
-            out.append(option)
-        elif isinstance(value, (list, tuple, np.ndarray)):
+        if _is_bool(value):
+            raise _not_a_bool(where, name, value)
+        if isinstance(value, (list, tuple, np.ndarray)):
+            if any(_is_bool(v) for v in value):
+                raise _not_a_bool(where, name, value)
             out += [option, ",".join(_text(v) for v in value)]
         else:
             out += [option, _text(value)]

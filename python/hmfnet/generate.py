@@ -6,25 +6,31 @@ from ._arguments import tokens as _tokens
 
 def er(n, *, seed, q=None, mean_degree=None):
     """Erdos-Renyi G(N, q): each pair linked with probability q (or q = d / (N - 1))."""
-    return _hmfnet._generate_er(_tokens(n=n, q=q, mean_degree=mean_degree, seed=seed))
+    return _hmfnet._generate_er(_tokens("generate.er", n=n, q=q, mean_degree=mean_degree,
+                                        seed=seed))
 
 
 def sf(n, *, alpha, seed, dmin=None, mean_degree=None, cutoff=None, link=None):
     """Scale-free Chung-Lu network, power-law targets P(d) ~ d^-alpha for d > dmin."""
-    return _hmfnet._generate_sf(_tokens(n=n, alpha=alpha, dmin=dmin, mean_degree=mean_degree,
-                                        cutoff=cutoff, link=link, seed=seed))
+    return _hmfnet._generate_sf(_tokens("generate.sf", n=n, alpha=alpha, dmin=dmin,
+                                        mean_degree=mean_degree, cutoff=cutoff, link=link,
+                                        seed=seed))
 
 
 def sbm(half, *, p_in, p_out, seed):
     """Two-block stochastic block model: 2 half nodes, p_in inside a block, p_out across."""
-    return _hmfnet._generate_sbm(_tokens(half=half, p_in=p_in, p_out=p_out, seed=seed))
+    return _hmfnet._generate_sbm(_tokens("generate.sbm", half=half, p_in=p_in, p_out=p_out,
+                                         seed=seed))
 
 
 def regular(n, *, degree, seed):
     """Random d-regular graph: every node has exactly `degree` neighbours (pairing model)."""
-    return _hmfnet._generate_regular(_tokens(n=n, degree=degree, seed=seed))
+    return _hmfnet._generate_regular(_tokens("generate.regular", n=n, degree=degree, seed=seed))
 
 
 def complete(n, *, self_loops=False):
     """The complete graph K_N, held in O(1) space."""
-    return _hmfnet.Network.complete(n, self_loops)
+    # Built directly, not through the grammar; the tokens only apply the generators' rule on
+    # bools (n=True is refused, self_loops must be one).
+    _tokens("generate.complete", n=n, self_loops=self_loops)
+    return _hmfnet.Network.complete(n, bool(self_loops))

@@ -106,7 +106,7 @@ void add_generate_options(CLI::App& app, GenerateFlags& flags, const GenerateRun
   auto* r = gen->add_subcommand(
       "regular", "Random d-regular graph: every node has exactly d neighbours (pairing model)");
   r->add_option("--n", regular.n, "Number of nodes")->required()->check(CLI::Range(1, 2147483647));
-  r->add_option("--degree", regular.degree, "Degree d of every node (0 <= d <= n - 1, n d even)")
+  r->add_option("--degree", regular.degree, "Degree d of every node (1 <= d <= n - 1, n d even)")
       ->required()
       ->check(CLI::Range(0, 2147483646));
   r->add_option("--seed", regular.seed, "Random seed")->required()->check(k_seed);

@@ -1,5 +1,5 @@
 // `hmfnet convert IN -o OUT.h5`: a network file to hmfnet HDF5, the format every rank reads by
-// row blocks, so a large text network is parsed once (issue #15 item 1). The text is parsed in
+// row blocks, so a large text network is parsed once (docs/scaling.md). The text is parsed in
 // parallel (parallel/distributed_text_read.hpp) and the rows written without gathering them
 // (parallel/distributed_network_file.hpp): the file is the same for any rank count and equals
 // what `write_network` writes for the serial read. `--partition P` renumbers the nodes so that
@@ -16,6 +16,7 @@
 #include "cli/provenance.hpp"
 #include "cli/read_flags.hpp"
 #include "core/atomic_file.hpp"
+#include "core/distinct_files.hpp"
 #include "core/error.hpp"
 #include "io/network_file.hpp"
 #include "network/node_ordering.hpp"
@@ -100,6 +101,7 @@ void run(const ConvertFlags& f) {
                      "blocks");
   }
   require_writable_destination(f.output);
+  require_distinct_files({{"input", f.input}}, {{"--output", f.output}});
   const auto start = std::chrono::steady_clock::now();
   DistributedRows rows = f.read.read_distributed_rows(f.input);
   nlohmann::json parameters{

@@ -12,6 +12,8 @@
 #include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
 
 #include "cli/command_options.hpp"
 #include "cli/command_reports.hpp"
@@ -19,6 +21,7 @@
 #include "cli/provenance.hpp"
 #include "cli/validators.hpp"
 #include "core/atomic_file.hpp"
+#include "core/error.hpp"
 #include "io/network_file.hpp"
 #include "network/chung_lu.hpp"
 #include "network/erdos_renyi.hpp"
@@ -37,10 +40,24 @@ void check_output(const std::string& path) {
   require_writable_destination(path);
 }
 
+// Every reader refuses a network with no edges (network/network_builder.cpp, io/network_hdf5.cpp),
+// so a generator must not write one. Parameters that can only give none are refused before any
+// work, naming the option (require_edges_possible below); a draw that came out empty although
+// edges were possible (N = 2, q = 0.01) is refused after generating, before anything is written.
+// run_generator and generate_and_write raise both through ParallelSession::agree: one report.
+[[noreturn]] void refuse_empty_draw(const std::string& options, NodeIndex n, std::uint64_t seed) {
+  throw ParameterError(options,
+                       "the network drawn (N = " + std::to_string(n) + ", seed " +
+                           std::to_string(seed) + ") has no edges",
+                       "parameters that draw at least one edge, since every reader refuses a "
+                       "network with no edges; raise them, or try another --seed");
+}
+
 // Generates and writes the network of `source` (`whole` builds the same network on one rank,
 // possibly faster, for the text formats) and reports its size, time and memory on rank 0.
 void generate_and_write(const EdgeSource& source, const std::function<Network()>& whole,
-                        const std::string& path, const std::string& provenance) {
+                        const std::string& path, const std::string& provenance,
+                        const std::function<void()>& refuse_empty) {
   const auto start = std::chrono::steady_clock::now();
   EdgeOffset nnz = 0;
   if (format_from_extension(path) == NetworkFormat::hdf5) {
@@ -48,6 +65,10 @@ void generate_and_write(const EdgeSource& source, const std::function<Network()>
     std::vector<std::uint64_t> total{static_cast<std::uint64_t>(block.nnz())};
     ParallelSession::sum_in_place(total);
     nnz = static_cast<EdgeOffset>(total[0]);
+    // Every rank holds the same sum: agree reports the refusal once, not once per rank.
+    ParallelSession::agree([&] {
+      if (nnz == 0) refuse_empty();
+    });
     write_distributed_network_hdf5(path, block, provenance);
   } else {
     // Rank 0 alone builds and writes it; a failure there ends every rank.
@@ -55,6 +76,7 @@ void generate_and_write(const EdgeSource& source, const std::function<Network()>
       if (!is_root()) return;
       const Network net = whole();
       nnz = net.nnz();
+      if (nnz == 0) refuse_empty();
       write_network(path, net, provenance);
     });
   }
@@ -70,21 +92,80 @@ void generate_and_write(const EdgeSource& source, const std::function<Network()>
 }
 
 // What one generator makes: its edges by rows (the distributed HDF5 path), the same network whole
-// on one rank (the text path; possibly faster) and the provenance its file records.
+// on one rank (the text path; possibly faster), the provenance its file records, and the refusal
+// of a draw that came out with no edges (naming the options that set the edge density).
 struct Generation {
   std::shared_ptr<const EdgeSource> source;
   std::function<Network()> whole;
   std::string provenance;
+  std::function<void()> refuse_empty;
 };
 
+std::function<void()> empty_draw_refusal(std::string options, NodeIndex n, std::uint64_t seed) {
+  return [options = std::move(options), n, seed] { refuse_empty_draw(options, n, seed); };
+}
+
+Network with_edges(const Generation& g) {
+  Network net = g.whole();
+  if (net.nnz() == 0) g.refuse_empty();
+  return net;
+}
+
+// A network of one node has no pair to link (the generators make no self-loops).
+void require_two_nodes(int n) {
+  if (n < 2) {
+    throw ParameterError("--n", "value " + std::to_string(n) + " is not allowed",
+                         ">= 2; one node has no pair to link, and every reader refuses a "
+                         "network with no edges");
+  }
+}
+
+// The parameters that give no edge whatever the seed.
+void require_edges_possible(const ErFlags& f) {
+  require_two_nodes(f.n);
+  const bool by_q = f.q >= 0.0;
+  if ((by_q ? f.q : f.mean_degree) == 0.0) {
+    throw ParameterError(by_q ? "--q" : "--mean-degree", "value 0 is not allowed",
+                         std::string(by_q ? "0 < q <= 1" : "> 0") +
+                             "; it links no pair, and every reader refuses a network with no "
+                             "edges");
+  }
+}
+
+void require_edges_possible(const SbmFlags& f) {
+  if (f.p_in == 0.0 && f.p_out == 0.0) {
+    throw ParameterError("--p-in, --p-out", "values 0 and 0 are not allowed",
+                         "p_in > 0 or p_out > 0; they link no pair, and every reader refuses a "
+                         "network with no edges");
+  }
+  if (f.half == 1 && f.p_out == 0.0) {
+    throw ParameterError("--p-out", "value 0 is not allowed with --half 1",
+                         "> 0; blocks of one node have no pair inside, and every reader refuses "
+                         "a network with no edges");
+  }
+}
+
+void require_edges_possible(const RegularFlags& f) {
+  require_two_nodes(f.n);
+  if (f.degree == 0) {
+    throw ParameterError("--degree", "value 0 is not allowed",
+                         "1 <= d <= n - 1 = " + std::to_string(f.n - 1) +
+                             "; d = 0 gives no edges, and every reader refuses a network with no "
+                             "edges");
+  }
+}
+
 Generation generation(const ErFlags& f) {
+  require_edges_possible(f);
   const double q = f.q >= 0.0 ? f.q : erdos_renyi_probability(f.n, f.mean_degree);
   const ErdosRenyiParameters params{f.n, q, f.seed};
   return {erdos_renyi_source(params), [params] { return erdos_renyi(params); },
-          provenance("generate er", {{"n", f.n}, {"q", q}, {"seed", f.seed}})};
+          provenance("generate er", {{"n", f.n}, {"q", q}, {"seed", f.seed}}),
+          empty_draw_refusal(f.q >= 0.0 ? "--q" : "--mean-degree", f.n, f.seed)};
 }
 
 Generation generation(const SfFlags& f) {
+  require_two_nodes(f.n);
   const double d_min =
       f.d_min > 0.0 ? f.d_min : power_law_d_min_for_mean(f.alpha, f.mean_degree, f.cutoff);
   const PowerLaw law{f.alpha, d_min, f.cutoff};
@@ -93,28 +174,36 @@ Generation generation(const SfFlags& f) {
   nlohmann::json p = {
       {"n", f.n}, {"alpha", f.alpha}, {"d_min", d_min}, {"link", f.link}, {"seed", f.seed}};
   p["cutoff"] = std::isinf(f.cutoff) ? nlohmann::json("none") : nlohmann::json(f.cutoff);
-  return {source, [source] { return network_from_source(*source); }, provenance("generate sf", p)};
+  return {source, [source] { return network_from_source(*source); }, provenance("generate sf", p),
+          empty_draw_refusal(f.d_min > 0.0 ? "--dmin" : "--mean-degree", f.n, f.seed)};
 }
 
 Generation generation(const SbmFlags& f) {
+  require_edges_possible(f);
   std::shared_ptr<const EdgeSource> source =
       two_block_sbm_source({f.half, f.p_in, f.p_out, f.seed});
   return {source, [source] { return network_from_source(*source); },
           provenance("generate sbm",
-                     {{"half", f.half}, {"p_in", f.p_in}, {"p_out", f.p_out}, {"seed", f.seed}})};
+                     {{"half", f.half}, {"p_in", f.p_in}, {"p_out", f.p_out}, {"seed", f.seed}}),
+          empty_draw_refusal("--p-in, --p-out", 2 * f.half, f.seed)};
 }
 
+// d >= 1 gives n d / 2 edges exactly: a regular draw is never empty.
 Generation generation(const RegularFlags& f) {
+  require_edges_possible(f);
   const RandomRegularParameters params{f.n, f.degree, f.seed};
   return {random_regular_source(params), [params] { return random_regular(params); },
-          provenance("generate regular", {{"n", f.n}, {"degree", f.degree}, {"seed", f.seed}})};
+          provenance("generate regular", {{"n", f.n}, {"degree", f.degree}, {"seed", f.seed}}),
+          empty_draw_refusal("--degree", f.n, f.seed)};
 }
 
 template <class Flags>
 void run_generator(const Flags& f) {
   check_output(f.output);
-  const Generation g = generation(f);
-  generate_and_write(*g.source, g.whole, f.output, g.provenance);
+  // Every rank checks the same parameters: agree reports a refusal once, not once per rank.
+  Generation g;
+  ParallelSession::agree([&] { g = generation(f); });
+  generate_and_write(*g.source, g.whole, f.output, g.provenance, g.refuse_empty);
 }
 
 void run_complete(const CompleteFlags& f) {
@@ -142,22 +231,22 @@ void add_generate_command(CLI::App& app) {
 
 GeneratedNetwork generated_network(const ErFlags& f) {
   const Generation g = generation(f);
-  return {g.whole(), g.provenance};
+  return {with_edges(g), g.provenance};
 }
 
 GeneratedNetwork generated_network(const SfFlags& f) {
   const Generation g = generation(f);
-  return {g.whole(), g.provenance};
+  return {with_edges(g), g.provenance};
 }
 
 GeneratedNetwork generated_network(const SbmFlags& f) {
   const Generation g = generation(f);
-  return {g.whole(), g.provenance};
+  return {with_edges(g), g.provenance};
 }
 
 GeneratedNetwork generated_network(const RegularFlags& f) {
   const Generation g = generation(f);
-  return {g.whole(), g.provenance};
+  return {with_edges(g), g.provenance};
 }
 
 }  // namespace hmfnet::cli

@@ -7,6 +7,7 @@
 #include "cli/read_flags.hpp"
 #include "cli/validators.hpp"
 #include "core/atomic_file.hpp"
+#include "core/distinct_files.hpp"
 #include "io/network_file.hpp"
 #include "network/rewiring.hpp"
 
@@ -17,6 +18,7 @@ namespace {
 void run(const RewireFlags& f) {
   format_from_extension(f.output);
   require_writable_destination(f.output);
+  require_distinct_files({{"input", f.input}}, {{"--output", f.output}});
   const Network net = f.read.read(f.input);
   const RewiringResult r = rewire_to_correlation(net, {f.target_rho, f.seed, f.max_attempts});
   if (!is_root()) return;

@@ -19,6 +19,7 @@
 #include "cli/read_flags.hpp"
 #include "cli/validators.hpp"
 #include "core/atomic_file.hpp"
+#include "core/distinct_files.hpp"
 #include "core/error.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/interrupt.hpp"
@@ -54,8 +55,18 @@ std::vector<double> parse_sweep(const std::string& text) {
   if (v.size() != 3 || !(v[2] > 0) || !(v[1] >= v[0])) {
     throw ParameterError("--K-sweep", text, "START:STOP:STEP with STEP > 0 and STOP >= START");
   }
+  // The count first: a step far below the range would otherwise fill the memory before any
+  // check could see the list (0:1:1e-300 asks for 10^300 values).
+  const double count = std::floor((v[1] - v[0]) / v[2] + 0.5) + 1.0;
+  if (!(count <= static_cast<double>(k_max_schedule))) {
+    throw ParameterError("--K-sweep", text + " gives " + number_text(count) + " K values",
+                         "at most " + std::to_string(k_max_schedule) + " K values per run");
+  }
   std::vector<double> K;
-  for (int k = 0; v[0] + k * v[2] <= v[1] + 0.5 * v[2]; ++k) K.push_back(v[0] + k * v[2]);
+  // `k <= count` ends the loop where START + k STEP rounds back to START (1e10:1e10:1e-10).
+  for (int k = 0; k <= count && v[0] + k * v[2] <= v[1] + 0.5 * v[2]; ++k) {
+    K.push_back(v[0] + k * v[2]);
+  }
   return K;
 }
 
@@ -171,7 +182,12 @@ void prepare_simulate(const SimulateFlags& f) {
   }
   if (!f.output.empty()) require_writable_destination(f.output);
   if (!f.checkpoint.empty()) require_writable_destination(f.checkpoint);
+  require_distinct_files({{"input", f.input}},
+                         {{"--output", f.output}, {"--checkpoint", f.checkpoint}});
   make_integrator(f.integrator);  // unknown names fail here, before any work
+  // Every range that does not need the network, before it is read: K_c only scales
+  // --K-over-Kc, so 1 stands in for it here.
+  validate(parameters(f, 1.0));
 }
 
 SimulateReport simulate_report(const SimulateFlags& f, const DistributedInput& input,
@@ -233,7 +249,7 @@ SimulateReport simulate_report(const SimulateFlags& f, const DistributedInput& i
   const std::vector<double> peak_mb = ParallelSession::peak_memory_mb();
   out["peak_rss_mb_per_rank"] = peak_mb;
   // What each force evaluation imports: [cos, sin] of every lane for each ghost column, as
-  // doubles (issue #15 items 4 and 6: the communication per step against the rank count).
+  // doubles (docs/scaling.md: the communication per step against the rank count).
   std::vector<double> ghosts(static_cast<std::size_t>(ParallelSession::ranks()), 0.0);
   ghosts[static_cast<std::size_t>(ParallelSession::rank())] =
       static_cast<double>(distributed->ghost_count());

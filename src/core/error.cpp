@@ -1,5 +1,7 @@
 #include "core/error.hpp"
 
+#include <cstdio>
+
 namespace hmfnet {
 
 namespace {
@@ -13,6 +15,12 @@ InputError::InputError(const std::string& file, std::int64_t line, const std::st
       m_file(file),
       m_line(line),
       m_cause(cause) {}
+
+std::string number_text(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", x);
+  return text;
+}
 
 ParameterError::ParameterError(const std::string& name, const std::string& cause,
                                const std::string& allowed)

@@ -29,6 +29,10 @@ class ParameterError : public std::invalid_argument {
   ParameterError(const std::string& name, const std::string& cause, const std::string& allowed);
 };
 
+/// x as a message shows it: at most 6 significant digits ("0.01", "1e+300"), never the hundreds of
+/// digits that std::to_string gives a large double.
+std::string number_text(double x);
+
 /// A numerical method that did not reach its tolerance: callers never get an unconverged answer
 /// silently (Spectra's CompInfo convention).
 class ConvergenceError : public std::runtime_error {

@@ -14,8 +14,9 @@ namespace hmfnet {
 namespace {
 
 // 2: checksum; 3: measured frame; 4: the fields of segment_state.hpp's lists, named in the file
-// (count_fields, real_fields, array_fields), node statistics carry their frame frequency.
-constexpr std::int64_t k_checkpoint_version = 4;
+// (count_fields, real_fields, array_fields), node statistics carry their frame frequency;
+// 5: the fingerprint holds the network's content hash and the force (kernel and precision).
+constexpr std::int64_t k_checkpoint_version = 5;
 
 std::size_t columns_of(int width, int replicas) {
   return static_cast<std::size_t>(width > 0 ? width : replicas);
@@ -156,6 +157,8 @@ std::string checksum(const Checkpoint& c) {
   }
   for (const PointResult& pt : c.points) {
     h.add_scalar(pt.K);
+    h.add_scalar(pt.h);
+    h.add(pt.integrator);
     for (const auto* v :
          {&pt.R_mean, &pt.R_sem, &pt.energy_rel_error_max, &pt.momentum_drift, &pt.R_node,
           &pt.omega_node, &pt.r_node, &pt.fluctuation, &pt.synchronised, &pt.phase_histogram,

@@ -18,6 +18,7 @@
 #include "dynamics/segment_state.hpp"
 #include "dynamics/thread_choice.hpp"
 #include "dynamics/time_average.hpp"
+#include "parallel/network_content_hash.hpp"
 #include "parallel/parallel_session.hpp"
 
 namespace hmfnet {
@@ -116,14 +117,21 @@ class Run {
   void restore(const Checkpoint& c);
   std::int64_t rotor_samples() const;
   void progress(int k_index, bool final_line) const;
-  std::string run_fingerprint() const {
-    return fingerprint(m_identity, m_network.global_size(), m_network.global_nnz());
+  /// Collective the first time (the network's content hash): called by every rank alike.
+  std::string run_fingerprint() {
+    if (m_fingerprint.empty()) {
+      const RunIdentity identity{m_network.global_size(), m_network.global_nnz(),
+                                 network_content_hash(m_network), m_force.name()};
+      m_fingerprint = fingerprint(m_identity, identity);
+    }
+    return m_fingerprint;
   }
 
   const DistributedNetwork& m_network;
   CouplingForce& m_force;
   const SimulationParameters& m_params;
   const SimulationParameters& m_identity;
+  std::string m_fingerprint;  // run_fingerprint(), formed once
   std::vector<double> m_lane_K;
   std::unique_ptr<Integrator> m_integrator;  // of the current segment (step_at)
   double m_h;                                // of the current segment
@@ -261,9 +269,9 @@ void Run::guard(const std::vector<double>& K, const std::vector<double>& errors)
     max_r = ParallelSession::max(max_r);
     const double omega = std::sqrt(K[b] * max_r);
     const double limit = m_integrator->stability_limit();
-    const std::string what = std::isfinite(err) ? "relative energy error " + std::to_string(err) +
+    const std::string what = std::isfinite(err) ? "relative energy error " + number_text(err) +
                                                       " exceeds the tolerance " +
-                                                      std::to_string(m_params.energy_tolerance)
+                                                      number_text(m_params.energy_tolerance)
                                                 : std::string("energy is NaN or infinite");
     char message[640];
     std::snprintf(
@@ -337,10 +345,11 @@ void Run::finish(bool interrupted) {
 }
 
 void Run::restore(const Checkpoint& c) {
-  if (c.fingerprint != run_fingerprint()) {
-    throw InputError(m_params.checkpoint_path, 0,
-                     "checkpoint belongs to a run with other parameters or another network "
-                     "(fingerprints differ); remove it or drop --resume");
+  const std::string difference = fingerprint_difference(c.fingerprint, run_fingerprint());
+  if (!difference.empty()) {
+    throw InputError(
+        m_params.checkpoint_path, 0,
+        "checkpoint belongs to another run (" + difference + "); remove it or drop --resume");
   }
   const std::int64_t k_index = c.record.count("k_index");
   if (c.replicas != m_width || k_index < 0 ||

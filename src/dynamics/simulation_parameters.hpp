@@ -14,6 +14,10 @@
 
 namespace hmfnet {
 
+/// The most K values one run takes (a list, or what a sweep expands to): each is a segment of
+/// its own with its own results, and a paper's sweep has 17.
+inline constexpr std::size_t k_max_schedule = 10'000;
+
 struct SimulationParameters {
   double h = 0.01;           ///< time step, > 0
   double duration = 1000.0;  ///< T2: time per K, > transient
@@ -67,8 +71,22 @@ StepChoice step_at(const SimulationParameters& params, std::size_t k);
 /// out). Keys follow the CLI's option names where there is one (T, transient, K, ...).
 nlohmann::json to_json(const SimulationParameters& params);
 
+/// What a run is besides its parameters: the network (size, stored entries and a hash of them,
+/// parallel/network_content_hash.hpp) and the force kernel with its precision.
+struct RunIdentity {
+  NodeIndex n = 0;
+  EdgeOffset nnz = 0;
+  std::uint64_t network_hash = 0;
+  std::string force;  ///< CouplingForce::name(): "sparse", "sparse-float32", "rank-one"
+};
+
 /// to_json less what cannot change the trajectory (the energy tolerance only decides whether a
-/// run stops), with the network's size: a checkpoint is only resumed by a run with the same one.
-std::string fingerprint(const SimulationParameters& params, NodeIndex n, EdgeOffset nnz);
+/// run stops), with the run's identity: a checkpoint is only resumed by a run with the same one.
+std::string fingerprint(const SimulationParameters& params, const RunIdentity& identity);
+
+/// Empty when the two fingerprints are equal; otherwise the first field that differs (the
+/// network's fields first, then the force, then the parameters by name) with both values, as
+/// "FIELD: VALUE in the checkpoint, VALUE in this run".
+std::string fingerprint_difference(const std::string& checkpoint, const std::string& run);
 
 }  // namespace hmfnet

@@ -384,8 +384,35 @@ std::string Hdf5File::string_attribute(hid_t where, const std::string& name) con
   return value;
 }
 
+namespace {
+std::string class_name(H5T_class_t type_class) {
+  switch (type_class) {
+    case H5T_INTEGER:
+      return "integer";
+    case H5T_FLOAT:
+      return "floating point";
+    case H5T_STRING:
+      return "string";
+    default:
+      return "neither integer nor floating point";
+  }
+}
+
+// H5Aread converts between type classes without a word: a float 1000.9 read into an int64 is
+// 1000. So the stored class is checked first, as dataset_length checks a dataset's.
+void require_attribute_class(const Hdf5File& f, hid_t attr, const std::string& name,
+                             bool float_allowed) {
+  H5Id type(H5Aget_type(attr), H5Tclose);
+  const H5T_class_t stored = H5Tget_class(type.get());
+  if (stored == H5T_INTEGER || (float_allowed && stored == H5T_FLOAT)) return;
+  f.fail("attribute " + name + " has the wrong type class (" + class_name(stored) + "; " +
+         (float_allowed ? "a number" : "an integer") + " is expected)");
+}
+}  // namespace
+
 std::int64_t Hdf5File::int_attribute(hid_t where, const std::string& name) const {
   const H5Id attr = open_scalar_attribute(*this, where, name);
+  require_attribute_class(*this, attr.get(), name, false);
   std::int64_t value = 0;
   if (H5Aread(attr.get(), H5T_NATIVE_INT64, &value) < 0) fail("cannot read attribute " + name);
   return value;
@@ -393,6 +420,8 @@ std::int64_t Hdf5File::int_attribute(hid_t where, const std::string& name) const
 
 double Hdf5File::double_attribute(hid_t where, const std::string& name) const {
   const H5Id attr = open_scalar_attribute(*this, where, name);
+  // An integer converts exactly up to 2^53, so an integer attribute is a valid real.
+  require_attribute_class(*this, attr.get(), name, true);
   double value = 0.0;
   if (H5Aread(attr.get(), H5T_NATIVE_DOUBLE, &value) < 0) fail("cannot read attribute " + name);
   return value;

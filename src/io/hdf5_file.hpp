@@ -75,7 +75,8 @@ class Hdf5File {
   std::vector<double> read_matrix(hid_t where, const std::string& name, std::size_t& rows,
                                   std::size_t& cols) const;
 
-  // Scalar attributes.
+  // Scalar attributes. The readers refuse a stored type class that would convert silently:
+  // int_attribute takes only integers (not a float 1000.9), double_attribute integers or floats.
   void set_attribute(hid_t where, const std::string& name, const std::string& value) const;
   void set_attribute(hid_t where, const std::string& name, std::int64_t value) const;
   void set_attribute(hid_t where, const std::string& name, double value) const;

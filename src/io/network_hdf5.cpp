@@ -83,6 +83,30 @@ NodeIndex node_count(const Hdf5File& file, hid_t group) {
   return static_cast<NodeIndex>(n);
 }
 
+// Whether the file stores weights: `weights` exists exactly when weighted = 1
+// (docs/file_formats.md). A file with one but not the other contradicts itself, and reading it
+// either way would be a guess, so it is refused.
+bool weighted_flag(const Hdf5File& file, hid_t group) {
+  const std::int64_t weighted = file.int_attribute(group, "weighted");
+  if (weighted != 0 && weighted != 1) {
+    file.fail("/network: weighted = " + std::to_string(weighted) + " (allowed: 0 or 1)");
+  }
+  if (weighted == 0 && file.exists("network/weights")) {
+    file.fail("/network: dataset weights is present but attribute weighted = 0");
+  }
+  return weighted == 1;
+}
+
+// The summary attribute nnz is what tools that read only attributes see: it must count the
+// stored column indices.
+void require_nnz_attribute(const Hdf5File& file, hid_t group, std::int64_t entries) {
+  const std::int64_t nnz = file.int_attribute(group, "nnz");
+  if (nnz != entries) {
+    file.fail("/network: attribute nnz = " + std::to_string(nnz) + " but dataset col holds " +
+              std::to_string(entries) + " entries");
+  }
+}
+
 // Network::check_csr walks col[row_ptr[i]..row_ptr[i+1]) row by row and only then sees a
 // pointer that is out of order, so pointers from a file are bounded first: a corrupted one
 // must be refused, not read past the end of col.
@@ -124,9 +148,8 @@ ReadResult read_network_hdf5(const std::string& path) {
   auto row_ptr = file.read_int64(group.get(), "row_ptr");
   auto cols = file.read_int32(group.get(), "col");
   std::vector<double> weights;
-  if (file.int_attribute(group.get(), "weighted") != 0) {
-    weights = file.read_double(group.get(), "weights");
-  }
+  if (weighted_flag(file, group.get())) weights = file.read_double(group.get(), "weights");
+  require_nnz_attribute(file, group.get(), static_cast<std::int64_t>(cols.size()));
   require_bounded_row_ptr(file, row_ptr, static_cast<std::int64_t>(cols.size()));
   const NodeIndex nodes = n;
   const std::string why = Network::check_csr(nodes, row_ptr, cols, weights);
@@ -153,6 +176,8 @@ RowBlock read_network_hdf5_rows(const std::string& path, int part, int parts) {
     file.fail("/network: row_ptr has " + std::to_string(row_ptr.size()) +
               " entries, expected n+1 = " + std::to_string(std::int64_t{block.n} + 1));
   }
+  require_nnz_attribute(file, group.get(), nnz);
+  const bool weighted = weighted_flag(file, group.get());
   require_bounded_row_ptr(file, row_ptr, nnz);
   // Blocks are read relative to their first pointer, so a shifted array would go unnoticed.
   if (row_ptr.front() != 0) {
@@ -173,7 +198,7 @@ RowBlock read_network_hdf5_rows(const std::string& path, int part, int parts) {
   const auto first = static_cast<std::size_t>(begin);
   const auto count = static_cast<std::size_t>(end - begin);
   block.cols = file.read_int32(group.get(), "col", first, count);
-  if (file.int_attribute(group.get(), "weighted") != 0) {
+  if (weighted) {
     block.weights = file.read_double(group.get(), "weights", first, count);
     if (file.dataset_size(group.get(), "weights", H5T_FLOAT) != static_cast<std::size_t>(nnz)) {
       file.fail("/network: weights and col differ in length");

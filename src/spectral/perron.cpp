@@ -4,6 +4,7 @@
 #include <AnasaziBlockKrylovSchurSolMgr.hpp>
 #include <AnasaziLOBPCGSolMgr.hpp>
 #include <AnasaziTpetraAdapter.hpp>
+#include <Eigen/Dense>
 #include <Teuchos_FancyOStream.hpp>
 #include <Teuchos_oblackholestream.hpp>
 #include <algorithm>
@@ -185,22 +186,27 @@ std::vector<double> column_of(const DistributedNetwork& network, NodeIndex j) {
   return network.gather(a);
 }
 
-// Krylov-Schur needs a basis of at least 3 vectors, more than a 1- or 2-node network has (found
-// with a 2-node network: Anasazi refuses "impossible orthogonality requests"): its symmetric
-// 2 x 2 matrix [[a, b], [b, d]] has the closed form lambda = (a + d)/2 + sqrt(((a - d)/2)^2 + b^2).
-RawPair tiny_pair(const DistributedNetwork& network) {
-  RawPair raw;
-  raw.ok = true;
-  if (network.global_size() == 1) {
-    raw.lambda = column_of(network, 0)[0];
-    raw.u = {1.0};
-    return raw;
+// Krylov-Schur needs a basis of a few vectors more than the pairs it returns, more than a
+// network of 1-3 nodes has (with 3 nodes Anasazi's orthogonalisation throws "constraints not
+// feasible"; with 2, "impossible orthogonality requests"). Below k_dense_perron_nodes the matrix
+// is formed whole on every rank (one product per column) and Eigen's symmetric QR solves it:
+// every eigenpair to machine precision, lambda_2 included, in microseconds.
+RawPair dense_pair(const DistributedNetwork& network) {
+  const NodeIndex n = network.global_size();
+  Eigen::MatrixXd a(n, n);
+  for (NodeIndex j = 0; j < n; ++j) {
+    const std::vector<double> column = column_of(network, j);
+    for (NodeIndex i = 0; i < n; ++i) a(i, j) = column[static_cast<std::size_t>(i)];
   }
-  const std::vector<double> first = column_of(network, 0), second = column_of(network, 1);
-  const double a = first[0], b = first[1], d = second[1];
-  raw.lambda = 0.5 * (a + d) + std::hypot(0.5 * (a - d), b);
-  raw.u = b != 0.0 ? std::vector<double>{b, raw.lambda - a}
-                   : (a >= d ? std::vector<double>{1.0, 0.0} : std::vector<double>{0.0, 1.0});
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(a);
+  RawPair raw;
+  raw.ok = solver.info() == Eigen::Success;
+  if (!raw.ok) return raw;
+  // Eigenvalues ascending: the last is the largest real one ("LR", as asked of Anasazi).
+  raw.lambda = solver.eigenvalues()(n - 1);
+  const Eigen::VectorXd u = solver.eigenvectors().col(n - 1);
+  raw.u.assign(u.data(), u.data() + n);
+  if (n >= 2) raw.lambda2 = solver.eigenvalues()(n - 2);
   return raw;
 }
 
@@ -275,15 +281,15 @@ PerronResult perron_eigenpair(const DistributedNetwork& network, const PerronOpt
     list.set("Num Blocks", std::min(options.num_blocks, std::max(3, network.global_size() - 1)));
     return list;
   }();
-  RawPair raw =
-      network.global_size() <= 2 ? tiny_pair(network) : run_solver<Krylov>(network, krylov);
+  const bool dense = network.global_size() <= k_dense_perron_nodes;
+  RawPair raw = dense ? dense_pair(network) : run_solver<Krylov>(network, krylov);
   double residual = 0.0;
   bool nonnegative = true;
   if (raw.ok) {
     nonnegative = normalise_perron(raw.u);
     residual = relative_residual(network, raw.lambda, raw.u);
   }
-  if (!raw.ok || residual > accept) {
+  if (!dense && (!raw.ok || residual > accept)) {
     Teuchos::ParameterList lobpcg = common_parameters(options);
     lobpcg.set("Maximum Iterations", 50 * options.max_restarts);
     lobpcg.set("Full Ortho", true);
@@ -308,7 +314,10 @@ PerronResult perron_eigenpair(const DistributedNetwork& network, const PerronOpt
   r.residual = residual;
   r.iterations = raw.iterations;
   r.lambda2 = std::numeric_limits<double>::quiet_NaN();
-  if (options.second_eigenvalue && network.global_size() > 2) {
+  if (options.second_eigenvalue && dense && network.global_size() >= 2) {
+    r.lambda2 = raw.lambda2;  // exact: the dense solve has every pair
+    r.lambda2_residual = 0.0;
+  } else if (options.second_eigenvalue && !dense) {
     bool settled = false;
     if (options.bound_lambda2_first) {
       const double threshold = r.lambda / options.gap_ratio;

@@ -11,6 +11,12 @@
 
 namespace hmfnet {
 
+/// Networks of at most this many nodes are solved densely (Eigen's symmetric eigensolver on the
+/// whole matrix, every pair to machine precision, lambda_2 exact): Krylov-Schur cannot run on a
+/// network with fewer nodes than its basis needs (3 and fewer), and below ~100 nodes the dense
+/// solve costs less than setting up Anasazi.
+inline constexpr NodeIndex k_dense_perron_nodes = 64;
+
 struct PerronOptions {
   double tolerance = 1e-10;  ///< Anasazi's relative residual tolerance ||Au - lambda u|| / |lambda|
   int max_restarts = 1000;

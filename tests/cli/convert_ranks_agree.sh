@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `hmfnet convert` parses a text network in parallel (issue #15 item 1):
+# `hmfnet convert` parses a text network in parallel (docs/scaling.md):
 #   1. a Matrix Market file and an edge list converted on 1 and on 2 ranks give the datasets of
 #      the HDF5 file `generate` writes for the same network, bit for bit;
 #   2. `convert --partition 2` on 2 ranks writes the same network renumbered: original_index is
@@ -61,9 +61,11 @@ assert mapped == set(zip(rows.tolist(), cols.tolist())), "renumbered edges diffe
 print(f"--partition 2: {len(mapped)} entries, the input's under original_index")
 PY
 
-# Line 3/4 of the way into the edge list lies in the second rank's byte range.
-lines=$(wc -l < "$dir/er.txt")
-bad=$((lines * 3 / 4))
+# The first line starting at or after 3/4 of the file's bytes lies in the second rank's range
+# (each rank parses an equal byte range of the body), however long the lines before it are.
+size=$(stat -c %s "$dir/er.txt")
+bad=$(LC_ALL=C awk -v from=$((size * 3 / 4)) \
+  'at >= from { print NR; exit } { at += length($0) + 1 }' "$dir/er.txt")
 sed "${bad}s/.*/17 x/" "$dir/er.txt" > "$dir/bad.txt"
 if OMP_NUM_THREADS=1 "$mpiexec" "$@" -np 2 "$hmfnet" convert "$dir/bad.txt" -o "$dir/bad.h5" \
   > "$dir/bad.log" 2>&1; then

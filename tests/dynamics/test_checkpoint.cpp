@@ -7,6 +7,10 @@
 #include <cmath>
 #include <csignal>
 #include <filesystem>
+#include <functional>
+#include <random>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "core/error.hpp"
@@ -129,4 +133,122 @@ TEST_CASE("The output size estimates bound the files a run writes [ER N=200]", "
   REQUIRE(estimated_run_file_bytes(p, net.size()) <= 2 * run_bytes + (1u << 20));
   remove_on_root(p.checkpoint_path);
   remove_on_root(results);
+}
+
+namespace {
+
+using Edges = std::vector<std::pair<NodeIndex, NodeIndex>>;
+
+Edges upper_edges(const Network& net) {
+  Edges e;
+  for (NodeIndex i = 0; i < net.size(); ++i)
+    for (EdgeOffset k = net.row_begin(i); k < net.row_end(i); ++k)
+      if (net.col(k) > i) e.emplace_back(i, net.col(k));
+  return e;
+}
+
+// Edge `which` moved to the first free partner of its first end: N and nnz stay the same.
+Network moved_edge(const Network& net, std::size_t which) {
+  Edges e = upper_edges(net);
+  const NodeIndex a = e[which].first;
+  NodeIndex c = 0;
+  for (;; ++c) {
+    bool taken = c == a;
+    for (const auto& [i, j] : e) taken = taken || (i == a && j == c) || (i == c && j == a);
+    if (!taken) break;
+  }
+  e[which].second = c;
+  return Network::from_undirected_edges(net.size(), e);
+}
+
+// Entry (i, j) and its mirror given weight 2: a weighted network of the same pattern.
+Network reweighted(const Network& net, std::size_t which) {
+  const auto [a, b] = upper_edges(net)[which];
+  std::vector<EdgeOffset> row_ptr;
+  std::vector<NodeIndex> cols;
+  std::vector<double> weights;
+  for (NodeIndex i = 0; i <= net.size(); ++i) row_ptr.push_back(net.row_begin(i));
+  for (NodeIndex i = 0; i < net.size(); ++i) {
+    for (EdgeOffset k = net.row_begin(i); k < net.row_end(i); ++k) {
+      cols.push_back(net.col(k));
+      const bool hit = (i == a && net.col(k) == b) || (i == b && net.col(k) == a);
+      weights.push_back(hit ? 2.0 : 1.0);
+    }
+  }
+  return Network::from_csr(net.size(), row_ptr, cols, weights);
+}
+
+// Resumes `p`'s checkpoint with what `change` alters; requires a refusal naming `field`.
+struct Perturbation {
+  std::string field;
+  std::function<void(SimulationParameters&)> change;
+};
+
+}  // namespace
+
+TEST_CASE("A resume on a changed network, force or parameter is refused naming it [ER N=200]",
+          "[checkpoint]") {
+  const Network net = erdos_renyi({200, 0.05, 6});
+  const DistributedNetwork d(net);
+  NetworkForce force(d);
+  SimulationParameters p = short_run();
+  p.checkpoint_path = temp_path("hmfnet_test_foreign_resume");
+  remove_on_root(p.checkpoint_path);
+  p.checkpoint_seconds = 0.0;
+  p.stop_after_steps = 50;
+  simulate(d, net.degrees(), force, p);
+  p.stop_after_steps = 0;
+  p.resume = true;
+  const auto refused = [&](const Network& other, CouplingForce& f, const SimulationParameters& q,
+                           const std::string& field) {
+    const DistributedNetwork od(other);
+    INFO("changed: " << field);
+    REQUIRE_THROWS_WITH(simulate(od, other.degrees(), f, q),
+                        Catch::Contains("checkpoint belongs to another run (" + field + ": "));
+  };
+
+  SECTION("one entry moved or one weight changed, at random places (fixed seed)") {
+    std::mt19937_64 rng(2024);
+    const std::size_t edges = upper_edges(net).size();
+    for (int trial = 0; trial < 5; ++trial) {
+      const std::size_t which = std::uniform_int_distribution<std::size_t>(0, edges - 1)(rng);
+      const Network moved = moved_edge(net, which), heavier = reweighted(net, which);
+      const DistributedNetwork dm(moved), dh(heavier);
+      NetworkForce fm(dm), fh(dh);
+      refused(moved, fm, p, "network (hash of its stored entries)");
+      refused(heavier, fh, p, "network (hash of its stored entries)");
+    }
+  }
+  SECTION("the force's precision") {
+    NetworkForce float32(d, ForcePrecision::float32);
+    refused(net, float32, p, "force");
+  }
+  SECTION("every parameter that changes the trajectory") {
+    const std::vector<Perturbation> changes{
+        {"K", [](SimulationParameters& q) { q.K[1] += 1.0; }},
+        {"h", [](SimulationParameters& q) { q.h = 0.01; }},
+        {"T", [](SimulationParameters& q) { q.duration = 5.0; }},
+        {"transient", [](SimulationParameters& q) { q.transient = 0.5; }},
+        {"replicas", [](SimulationParameters& q) { q.replicas[0].seed += 1; }},
+        {"replicas", [](SimulationParameters& q) { q.replicas[0].sigma0 = 0.5; }},
+        {"replicas", [](SimulationParameters& q) { q.replicas[0].omega = 0.0; }},
+        {"replicas",
+         [](SimulationParameters& q) { q.replicas[0].momenta = MomentumDistribution::waterbag; }},
+        {"replicas",
+         [](SimulationParameters& q) {
+           q.replicas.push_back({6.0, 1.0, 12});
+         }},
+        {"integrator", [](SimulationParameters& q) { q.integrator = "yoshida4"; }},
+        {"continue_state", [](SimulationParameters& q) { q.continue_state = false; }},
+        {"node_data", [](SimulationParameters& q) { q.node_data = true; }},
+        {"record_stride", [](SimulationParameters& q) { q.record_stride = 20; }},
+        {"batches", [](SimulationParameters& q) { q.batches = 10; }},
+    };
+    for (const Perturbation& c : changes) {
+      SimulationParameters q = p;
+      c.change(q);
+      refused(net, force, q, c.field);
+    }
+  }
+  remove_on_root(p.checkpoint_path);
 }

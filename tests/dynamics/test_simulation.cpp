@@ -188,7 +188,8 @@ TEST_CASE("A checkpoint of other parameters is refused with the reason", "[simul
   p.stop_after_steps = 0;
   p.resume = true;
   p.K = {25.0};
-  REQUIRE_THROWS_WITH(simulate(d, net.degrees(), force, p), Catch::Contains("fingerprints differ"));
+  REQUIRE_THROWS_WITH(simulate(d, net.degrees(), force, p),
+                      Catch::Contains("checkpoint belongs to another run (K: ["));
   ParallelSession::max(0.0);
   if (ParallelSession::rank() == 0) std::filesystem::remove(p.checkpoint_path);
 }
@@ -355,7 +356,7 @@ TEST_CASE("A per-K step list is range-checked naming the entry", "[simulation]")
   REQUIRE_THROWS_WITH(validate(p), Catch::Contains("h = 2"));
 }
 
-// Bugs found by the review of issue #19, each reproduced before its fix.
+// Bugs found by a review of the run loop, each reproduced before its fix.
 
 namespace {
 
@@ -453,17 +454,46 @@ TEST_CASE("The results file records each K's integrator and step [per-K steps]",
 TEST_CASE("One serialisation: the fingerprint is to_json less the energy tolerance",
           "[simulation]") {
   SimulationParameters p = short_run();
+  const RunIdentity identity{10, 40, 0x0123456789abcdefULL, "sparse"};
   nlohmann::json expected = to_json(p);
   expected.erase("energy_tolerance");
   expected["n"] = 10;
   expected["nnz"] = 40;
-  REQUIRE(nlohmann::json::parse(fingerprint(p, 10, 40)) == expected);
+  expected["network_hash"] = "0123456789abcdef";
+  expected["force"] = "sparse";
+  REQUIRE(nlohmann::json::parse(fingerprint(p, identity)) == expected);
   SimulationParameters looser = p;
   looser.energy_tolerance = 0.5;
-  REQUIRE(fingerprint(looser, 10, 40) == fingerprint(p, 10, 40));
+  REQUIRE(fingerprint(looser, identity) == fingerprint(p, identity));
+  REQUIRE(fingerprint_difference(fingerprint(p, identity), fingerprint(p, identity)).empty());
   SimulationParameters other_seed = p;
   other_seed.replicas[0].seed += 1;
-  REQUIRE(fingerprint(other_seed, 10, 40) != fingerprint(p, 10, 40));
+  REQUIRE(fingerprint(other_seed, identity) != fingerprint(p, identity));
+}
+
+TEST_CASE("A fingerprint mismatch names the network first, then the force, then a parameter",
+          "[simulation]") {
+  const SimulationParameters p = short_run();
+  const RunIdentity identity{10, 40, 0x0123456789abcdefULL, "sparse"};
+  const auto difference = [&](const SimulationParameters& q, const RunIdentity& id) {
+    return fingerprint_difference(fingerprint(p, identity), fingerprint(q, id));
+  };
+  RunIdentity other_network = identity;
+  other_network.network_hash += 1;
+  SimulationParameters other_h = p;
+  other_h.h = 0.01;
+  CHECK_THAT(difference(other_h, other_network),
+             Catch::StartsWith("network (hash of its stored entries): \"0123456789abcdef\" in the "
+                               "checkpoint, \"0123456789abcdf0\" in this run"));
+  RunIdentity float32 = identity;
+  float32.force = "sparse-float32";
+  CHECK_THAT(difference(other_h, float32),
+             Catch::StartsWith("force: \"sparse\" in the checkpoint"));
+  CHECK_THAT(difference(other_h, identity), Catch::StartsWith("h: 0.02 in the checkpoint, 0.01"));
+  SimulationParameters long_K = p;
+  long_K.K.assign(100, 1.0 / 3.0);
+  INFO(difference(long_K, identity));
+  CHECK(difference(long_K, identity).size() < 200);
 }
 
 TEST_CASE("K_N held implicitly runs the protocol as the stored graph does [N = 300, 3 K]",

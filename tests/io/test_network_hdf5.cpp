@@ -1,5 +1,6 @@
 // hmfnet's HDF5 network file: exact round trips, and refusal (an InputError naming the file) of
-// files that are not HDF5, not ours, or whose CSR arrays were corrupted after writing.
+// files that are not HDF5, not ours, whose CSR arrays were corrupted after writing, or whose
+// attributes have the wrong type or contradict the datasets.
 #include <hdf5.h>
 
 #include <catch2/catch.hpp>
@@ -42,6 +43,15 @@ void set_int_attribute(const std::string& path, const std::string& object, const
   H5Aclose(attr);
   H5Oclose(where);
   H5Fclose(file);
+}
+
+// Replaces the attribute NAME of OBJECT by a floating-point one (a foreign writer's n = 1000.9).
+void set_double_attribute(const std::string& path, const std::string& object,
+                          const std::string& name, double value) {
+  const Hdf5File file(path, Hdf5File::Mode::update);
+  const H5Id where(H5Oopen(file.id(), object.c_str(), H5P_DEFAULT), H5Oclose);
+  REQUIRE(where.get() >= 0);
+  file.set_attribute(where.get(), name, value);
 }
 
 // A small valid file of the unweighted test network, for the corruption tests.
@@ -279,6 +289,104 @@ TEST_CASE("HDF5 network reader refuses a file holding a network with no edges [e
   write_network_hdf5(path, Network::from_undirected_edges(3, {}));
   const auto e = input_error_from([&] { read_network_hdf5(path); });
   require_input_error(e, path, 0, "empty network: 3 nodes and no edges");
+}
+
+// Found by an adversarial probe: H5Aread converted a float n = 1000.9 to the integer 1000 and the
+// file was read as if it held 1000 nodes, while a float col dataset was refused.
+TEST_CASE(
+    "HDF5 network readers refuse an integer attribute stored as a float, naming it "
+    "[float n, nnz, weighted, format_version]",
+    "[io][hdf5]") {
+  TempDirectory dir;
+  const std::string cause = " has the wrong type class (floating point; an integer is expected)";
+  SECTION("a CSR file's n, nnz and weighted, read whole and by rows") {
+    for (const char* name : {"n", "nnz", "weighted"}) {
+      const std::string path = valid_file(dir);
+      set_double_attribute(path, "/network", name, 1000.9);
+      INFO("attribute " << name);
+      require_input_error(input_error_from([&] { read_network_hdf5(path); }), path, 0,
+                          "attribute " + std::string(name) + cause);
+      require_input_error(input_error_from([&] { read_network_hdf5_rows(path, 0, 2); }), path, 0,
+                          "attribute " + std::string(name) + cause);
+    }
+  }
+  SECTION("format_version 1.0: equal to an allowed value, still the wrong class") {
+    const std::string path = valid_file(dir);
+    set_double_attribute(path, "/", "format_version", 1.0);
+    require_input_error(input_error_from([&] { read_network_hdf5(path); }), path, 0,
+                        "attribute format_version" + cause);
+  }
+  SECTION("the complete graph's n and nnz") {
+    const std::string path = dir.file("k.h5");
+    for (const char* name : {"n", "nnz", "self_loops_all"}) {
+      write_complete_graph_hdf5(path, CompleteGraph::make(50, false));
+      set_double_attribute(path, "/network", name, 50.0);
+      INFO("attribute " << name);
+      require_input_error(input_error_from([&] { read_implicit_network_hdf5(path); }), path, 0,
+                          "attribute " + std::string(name) + cause);
+    }
+  }
+}
+
+TEST_CASE("HDF5 real attributes accept integers and refuse strings [double_attribute]",
+          "[io][hdf5]") {
+  TempDirectory dir;
+  const std::string path = dir.file("a.h5");
+  {
+    const Hdf5File file(path, Hdf5File::Mode::create);
+    file.set_attribute(file.id(), "count", std::int64_t{7});
+    file.set_attribute(file.id(), "text", std::string("7.5"));
+  }
+  const Hdf5File file(path, Hdf5File::Mode::read);
+  CHECK(file.double_attribute(file.id(), "count") == 7.0);
+  require_input_error(input_error_from([&] { file.double_attribute(file.id(), "text"); }), path, 0,
+                      "attribute text has the wrong type class (string; a number is expected)");
+  require_input_error(input_error_from([&] { file.int_attribute(file.id(), "text"); }), path, 0,
+                      "attribute text has the wrong type class (string; an integer is expected)");
+}
+
+// Found by an adversarial probe: a weights dataset in a file whose attribute says weighted = 0
+// was silently ignored, so the network was read as 0/1 whatever the weights held.
+TEST_CASE(
+    "HDF5 network readers refuse weights that the weighted attribute contradicts "
+    "[weights with weighted = 0, weighted = 2]",
+    "[io][hdf5]") {
+  TempDirectory dir;
+  const std::string path = valid_file(dir);
+  SECTION("a weights dataset while weighted = 0") {
+    {
+      const Hdf5File file(path, Hdf5File::Mode::update);
+      const H5Id group = file.open_group("network");
+      const auto nnz = static_cast<std::size_t>(file.int_attribute(group.get(), "nnz"));
+      file.write(group.get(), "weights", std::vector<double>(nnz, 2.5));
+    }
+    const std::string cause = "/network: dataset weights is present but attribute weighted = 0";
+    require_input_error(input_error_from([&] { read_network_hdf5(path); }), path, 0, cause);
+    for (int part = 0; part < 2; ++part) {
+      require_input_error(input_error_from([&] { read_network_hdf5_rows(path, part, 2); }), path, 0,
+                          cause);
+    }
+  }
+  SECTION("weighted = 2") {
+    set_int_attribute(path, "/network", "weighted", 2);
+    require_input_error(input_error_from([&] { read_network_hdf5(path); }), path, 0,
+                        "/network: weighted = 2 (allowed: 0 or 1)");
+    require_input_error(input_error_from([&] { read_network_hdf5_rows(path, 0, 1); }), path, 0,
+                        "/network: weighted = 2 (allowed: 0 or 1)");
+  }
+}
+
+TEST_CASE("HDF5 network readers refuse an nnz attribute that disagrees with col [summary nnz]",
+          "[io][hdf5]") {
+  TempDirectory dir;
+  const std::string path = valid_file(dir);
+  const auto nnz = static_cast<std::int64_t>(read_network_hdf5(path).network.nnz());
+  set_int_attribute(path, "/network", "nnz", nnz + 1);
+  const std::string cause = "/network: attribute nnz = " + std::to_string(nnz + 1) +
+                            " but dataset col holds " + std::to_string(nnz) + " entries";
+  require_input_error(input_error_from([&] { read_network_hdf5(path); }), path, 0, cause);
+  require_input_error(input_error_from([&] { read_network_hdf5_rows(path, 1, 2); }), path, 0,
+                      cause);
 }
 
 TEST_CASE("HDF5 network writer to a missing directory throws and creates nothing [no dir]",

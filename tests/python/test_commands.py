@@ -2,6 +2,7 @@
 parameters: the same code path (cli/command_reports.hpp), so the numbers must agree to
 round-off (the network reaches the CLI through a file, rebuilt row by row: same matrix, same
 order of operations; 1e-12 relative leaves room for nothing but that)."""
+import networkx as nx
 import numpy as np
 import pytest
 
@@ -108,3 +109,72 @@ def test_parameters_out_of_range_raise_value_error(karate, call, message):
 def test_a_step_that_blows_up_raises(karate):
     with pytest.raises(hmfnet.SimulationBlowUp, match="energy"):
         hmfnet.simulate(karate[0], seed=1, K=[50.0], h=1.5, T=30, transient=0, threads=1)
+
+
+@pytest.mark.parametrize("call, message", [
+    # False is not "omit" for a number: it would run with the default T or sigma0.
+    (lambda n: hmfnet.simulate(n, seed=1, K=[1], T=False),
+     "simulate: T=False: a bool is not a number \\(T takes a number\\)"),
+    (lambda n: hmfnet.simulate(n, seed=1, K=[1], sigma0=False), "simulate: sigma0=False"),
+    (lambda n: hmfnet.simulate(n, seed=1, K=[1], T=True), "simulate: T=True: a bool"),
+    (lambda n: hmfnet.simulate(n, seed=True, K=[1]), "simulate: seed=True: a bool"),
+    (lambda n: hmfnet.simulate(n, seed=1, K=[1], transient=np.bool_(True)), "transient=True"),
+    (lambda n: hmfnet.simulate(n, seed=1, K=[1, True]), "simulate: K=\\[1, True\\]"),
+    (lambda n: hmfnet.simulate(n, seed=1, K=np.array([True])), "simulate: K=.*a bool"),
+    (lambda n: hmfnet.simulate(n, seed=1, K=[1], integrator=True),
+     "integrator=True: a bool is not a string \\(integrator takes a string\\)"),
+    (lambda n: hmfnet.simulate(n, seed=1, K=[1], node_data=1),
+     "simulate: node_data=1: node_data is a flag"),
+    (lambda n: hmfnet.spectrum(n, sigma0=True), "spectrum: sigma0=True"),
+    (lambda n: hmfnet.theory(n, sigma0=0.3, K=[1], tolerance=False), "theory: tolerance=False"),
+    (lambda n: hmfnet.read_network("x.mtx", nodes=True), "read_network: nodes=True"),
+    (lambda n: hmfnet.generate.er(10, q=True, seed=1), "generate.er: q=True"),
+    (lambda n: hmfnet.generate.regular(10, degree=2, seed=np.True_), "generate.regular: seed"),
+    (lambda n: hmfnet.generate.complete(True), "generate.complete: n=True"),
+])
+def test_a_bool_is_refused_where_a_number_or_string_is_needed(karate, call, message):
+    with pytest.raises(TypeError, match=message):
+        call(karate[0])
+
+
+def test_flags_take_bools_python_or_numpy(karate, tmp_path):
+    for value in (True, np.True_):
+        out = tmp_path / f"{type(value).__name__}.h5"
+        hmfnet.simulate(karate[0], seed=1, K=[1.0], T=0.5, transient=0, threads=1,
+                        node_data=value, restart_each_K=np.False_, output=str(out))
+        assert hmfnet.read_run(out)["parameters"]["node_data"] is True
+    assert hmfnet.generate.complete(5, self_loops=np.True_).nnz == 25
+
+
+def test_an_output_or_checkpoint_over_the_input_file_is_refused_and_the_file_kept(karate, tmp_path):
+    path = tmp_path / "k.mtx"
+    karate[0].save(str(path))
+    before = path.read_bytes()
+    net = hmfnet.read_network(str(path))
+    (tmp_path / "link.mtx").symlink_to(path)
+    for where in ({"output": str(path)}, {"checkpoint": str(path)},
+                  {"output": str(tmp_path / "." / "k.mtx")}, {"checkpoint": str(tmp_path / "link.mtx")}):
+        with pytest.raises(hmfnet.InputError, match="names the same file as the input file"):
+            hmfnet.simulate(net, seed=1, K=[1], T=10, transient=1, **where)
+    assert path.read_bytes() == before
+
+
+@pytest.mark.parametrize("options, message", [
+    ({"K_sweep": "0:1:1e-300"}, "--K-sweep: 0:1:1e-300 gives 1e\\+300 K values \\(allowed: at most 10000"),
+    ({"K": [1], "T": 1e300}, "T / h: 1e\\+300 / 0.01 = 1e\\+302 steps per K"),
+    ({"K": [1], "h": 1e-300}, "T / h: 1000 / 1e-300 = 1e\\+303 steps per K"),
+])
+def test_options_that_expand_too_far_are_refused_at_once_in_short_numbers(karate, options, message):
+    with pytest.raises(ValueError, match=message):
+        hmfnet.simulate(karate[0], seed=1, **options)
+
+
+@pytest.mark.parametrize("graph", [nx.path_graph(3), nx.star_graph(2), nx.cycle_graph(3),
+                                   nx.path_graph(4), nx.complete_graph(2)])
+def test_networks_of_two_to_four_nodes_work_in_every_command(graph):
+    net = hmfnet.Network.from_networkx(graph)
+    lam = float(np.linalg.eigvalsh(nx.to_numpy_array(graph))[-1])
+    assert hmfnet.spectrum(net)["lambda"] == pytest.approx(lam, rel=1e-12)
+    assert hmfnet.theory(net, sigma0=0.35, K_over_Kc=[2.0])["points"][0]["status"] == "converged"
+    run = hmfnet.simulate(net, seed=1, K_over_Kc=[2.0], T=10, transient=1)
+    assert run["points"][0]["energy_rel_error_max"] < 1e-2

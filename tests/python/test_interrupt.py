@@ -58,8 +58,9 @@ def test_ctrl_c_raises_keyboard_interrupt_and_restores_the_handler(tmp_path):
     """)
     p = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True,
                          env=os.environ.copy())
-    # The checkpoint is written when the integration of the first K starts, after the handler
-    # is installed: only then is the signal the run's to take.
+    # The first checkpoint of a one-K run is written after 5 s of integration (the default
+    # interval; none is written as the first K starts), when the run's SIGINT handler is in
+    # place: only then is the signal the run's to take. T = 10^6 keeps the run going after it.
     deadline = time.monotonic() + 60
     while not checkpoint.exists() and time.monotonic() < deadline and p.poll() is None:
         time.sleep(0.05)

@@ -131,3 +131,38 @@ def test_duplicate_entries_refused_as_the_readers_refuse_them():
     A = sp.coo_matrix(([1.0, 1.0, 1.0, 1.0], ([0, 0, 1, 1], [1, 1, 0, 0])), shape=(2, 2))
     with pytest.raises(hmfnet.InputError, match="scipy matrix:2: .*duplicate"):
         hmfnet.Network.from_scipy(A)
+
+
+@pytest.mark.parametrize("weight", [None, "weight"])
+def test_networkx_self_loops_equal_the_matrix_market_reader(tmp_path, weight):
+    # networkx writes an undirected self-loop as the diagonal entries w, w and -w; the file
+    # readers store A_nn = w. Weight 2.5 on a loop tells w from 2w.
+    G = nx.Graph()
+    G.add_weighted_edges_from([(0, 1, 1.0), (1, 2, 2.0), (2, 0, 1.5), (2, 3, 1.0), (3, 3, 2.5),
+                               (0, 0, 1.0)])
+    field, lines = ("real", ["2 1 1", "3 2 2", "3 1 1.5", "4 3 1", "4 4 2.5", "1 1 1"])
+    if weight is None:
+        field, lines = "pattern", [" ".join(line.split()[:2]) for line in lines]
+    path = tmp_path / "loops.mtx"
+    path.write_text(f"%%MatrixMarket matrix coordinate {field} symmetric\n4 4 6\n"
+                    + "\n".join(lines) + "\n")
+    from_file = hmfnet.read_network(path)
+    net = hmfnet.Network.from_networkx(G, weight=weight)
+    np.testing.assert_array_equal(csr(net), csr(from_file))
+    a, b = hmfnet.spectrum(net), hmfnet.spectrum(from_file)
+    assert a["lambda"] == pytest.approx(b["lambda"], rel=1e-12)
+    for key in ("nnz", "edges", "self_loops"):
+        assert a[key] == b[key], key
+    assert a["self_loops"] == 2 and net.nnz == 2 * (6 - 2) + 2
+
+
+@pytest.mark.parametrize("matrix", [
+    sp.csr_matrix(np.array([[0, 1 + 2j], [1 - 2j, 0]])),
+    np.array([[0, 1], [1, 0]], dtype=complex),  # a zero imaginary part is still complex
+])
+def test_complex_matrices_refused_as_the_matrix_market_reader_refuses_them(matrix):
+    with pytest.raises(hmfnet.InputError,
+                       match="^scipy matrix: dtype 'complex128' is not supported"):
+        hmfnet.Network.from_scipy(matrix)
+    with pytest.raises(hmfnet.InputError, match="^mine: dtype"):
+        hmfnet.Network.from_scipy(matrix, source="mine")
