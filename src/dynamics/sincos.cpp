@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <cstring>
 
+#include "dynamics/kernel_arithmetic.hpp"
+
 namespace hmfnet {
 
 namespace {
@@ -29,70 +31,19 @@ HMFNET_INLINE To bits_as(const From& from) {
   return to;
 }
 
-// pi/2 = kPio2[0] + kPio2[1] + kPio2[2] + kPio2[3] to ~2^-135; the first three have 26
-// significant bits, so q kPio2[i] is exact for |q| < 2^27 (computed with mpmath at 300 bits).
-constexpr double kPio2[4] = {0x1.921fb50000000p+0, 0x1.110b460000000p-26, 0x1.1a62630000000p-54,
-                             0x1.8a2e03707344ap-81};
-constexpr double kTwoOverPi = 0x1.45f306dc9c883p-1;
-// Adding and subtracting 1.5 2^52 rounds a double below 2^51 to the nearest integer (ties to
-// even), and the sum's low mantissa bits then hold that integer in two's complement.
-constexpr double kRoundShift = 0x1.8p52;
-constexpr std::uint64_t kAbsMask = 0x7fffffffffffffffULL;
-constexpr std::uint64_t kSignBit = 0x8000000000000000ULL;
-
-// Minimax polynomials on [-pi/4, pi/4] (Cephes' sin.c coefficients):
-// sin r = r + r^3 S(r^2), cos r = 1 - r^2 / 2 + r^4 C(r^2).
-constexpr double kSin[6] = {1.58962301576546568060e-10, -2.50507477628578072866e-8,
-                            2.75573136213857245213e-6,  -1.98412698295895385996e-4,
-                            8.33333333332211858878e-3,  -1.66666666666666307295e-1};
-constexpr double kCos[6] = {-1.13585365213876817300e-11, 2.08757008419747316778e-9,
-                            -2.75573141792967388112e-7,  2.48015872888517045348e-5,
-                            -1.38888888888730564116e-3,  4.16666666666665929218e-2};
-
-// The lanes' cos and sin. A lane whose |x| exceeds kReducedRange (or is not finite) computes
-// sin 0 instead; the caller overwrites it with the C library's value.
-HMFNET_INLINE void sincos_lanes(const VecD& angle, VecD& c, VecD& s) {
-  const auto range_bits = bits_as<std::uint64_t>(kReducedRange);
-  // Integer comparison of |x|'s bits (a NaN's are above infinity's): a floating-point one may
-  // trap and then stays a branch.
-  const auto inside = bits_as<VecU>((bits_as<VecU>(angle) & kAbsMask) <= range_bits);
-  const auto x = bits_as<VecD>(bits_as<VecU>(angle) & inside);
-  const VecD t = x * kTwoOverPi + kRoundShift;
-  const VecD q = t - kRoundShift;
-  const VecU j = bits_as<VecU>(t);  // q mod 4 = j & 3
-  // r + r_lo = x - q pi/2 to ~2^-105 |x|: x - q kPio2[0] and the next subtraction are exact;
-  // b = q kPio2[2] + q kPio2[3] with its rounding error eb (Fast2Sum, |p2| >= |p3|); r = a - b
-  // rounded once, and r_lo the rounding of r (Fast2Sum: exact because a is a multiple of a unit
-  // at least ulp(b), also where |a| < |b|) less eb. Without r_lo the rounding of r costs 1 ulp
-  // where |sin| or |cos| is just below 1/2 and |r| just above (measured 1.5 ulp); without eb,
-  // angles within ~10^-10 of a multiple of pi/2 (|r| tiny) lose up to thousands of ulp.
-  const VecD a = (x - q * kPio2[0]) - q * kPio2[1];
-  const VecD p2 = q * kPio2[2];
-  const VecD p3 = q * kPio2[3];
-  const VecD b = p2 + p3;
-  const VecD eb = p3 - (b - p2);
-  const VecD r = a - b;
-  const VecD r_lo = ((a - r) - b) - eb;
-  const VecD z = r * r;
-  const VecD ps =
-      ((((kSin[0] * z + kSin[1]) * z + kSin[2]) * z + kSin[3]) * z + kSin[4]) * z + kSin[5];
-  const VecD pc =
-      ((((kCos[0] * z + kCos[1]) * z + kCos[2]) * z + kCos[3]) * z + kCos[4]) * z + kCos[5];
-  // sin(r + r_lo) = sin r + r_lo cos r, cos(r + r_lo) = cos r - r_lo sin r, to first order in
-  // r_lo (|r_lo| <= 2^-54 |r|); cos r = w + ((1 - w) - z / 2 + z^2 C) with w = 1 - z / 2: the
-  // parenthesis recovers the rounding of w (fdlibm's kernel_cos).
-  const VecD half_z = 0.5 * z;
-  const VecD sin_r = r + (r * z * ps + r_lo * (1.0 - half_z));
-  const VecD w = 1.0 - half_z;
-  const VecD cos_r = w + (((1.0 - w) - half_z) + (z * z * pc - r * r_lo));
-  // Quadrant j: (cos, sin)(x) = (cos r, sin r), (-sin r, cos r), (-cos r, -sin r), (sin r,
-  // -cos r) for j = 0, 1, 2, 3: swap when j is odd, then flip the sign bits.
-  const VecU swap = 0 - (j & 1U);
-  const VecU sin_bits = (bits_as<VecU>(sin_r) & ~swap) | (bits_as<VecU>(cos_r) & swap);
-  const VecU cos_bits = (bits_as<VecU>(cos_r) & ~swap) | (bits_as<VecU>(sin_r) & swap);
-  s = bits_as<VecD>(sin_bits ^ ((j << 62) & kSignBit));
-  c = bits_as<VecD>(cos_bits ^ (((j + 1U) << 62) & kSignBit));
-}
+// The lanes of the shared sincos template (kernel_arithmetic.hpp: sincos_lanes, which a CUDA
+// device and sincos_one also instantiate, on one double): the same operations, so the same bits
+// by construction.
+struct VectorLanes {
+  using Real = VecD;
+  using Bits = VecU;
+  static HMFNET_INLINE Bits bits(const Real& x) { return bits_as<Bits>(x); }
+  static HMFNET_INLINE Real real(const Bits& b) { return bits_as<Real>(b); }
+  // A vector comparison gives -1 (all ones) or 0 per lane.
+  static HMFNET_INLINE Bits at_most(const Bits& a, std::uint64_t b) {
+    return bits_as<Bits>(a <= b);
+  }
+};
 
 HMFNET_INLINE void store_interleaved(const VecD& c, const VecD& s, int lanes, double* cs) {
   for (int l = 0; l < lanes; ++l) {
@@ -109,13 +60,13 @@ HMFNET_INLINE void sincos_block(const double* x, std::size_t n, double* cs) {
   for (std::size_t k = 0; k < body; k += kLanes) {
     VecD v;
     std::memcpy(&v, x + k, sizeof v);
-    sincos_lanes(v, c, s);
+    sincos_lanes<VectorLanes>(v, c, s);
     store_interleaved(c, s, kLanes, cs + 2 * k);
   }
   if (body < n) {
     VecD v = {0.0, 0.0, 0.0, 0.0};
     std::memcpy(&v, x + body, (n - body) * sizeof(double));
-    sincos_lanes(v, c, s);
+    sincos_lanes<VectorLanes>(v, c, s);
     store_interleaved(c, s, static_cast<int>(n - body), cs + 2 * body);
   }
   // The rare angles beyond the reduced range, and non-finite ones, from the C library.

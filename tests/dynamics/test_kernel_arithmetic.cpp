@@ -1,0 +1,296 @@
+// The host-and-device arithmetic (dynamics/kernel_arithmetic.hpp) against the CPU kernels it must
+// reproduce bit for bit, so that a device running these functions gives the CPU's bits: the
+// scalar sincos against the vectorised one (random angles, the doubles nearest multiples of pi/2,
+// angles beyond the reduced range and non-finite ones), and leap-frog steps of the real
+// NetworkForce and LeapFrog against the same steps composed by hand from the per-element
+// functions (sincos, row sums, g, the observable terms, kick, drift).
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cfloat>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <ios>
+#include <limits>
+#include <random>
+#include <utility>
+#include <vector>
+
+#include "dynamics/integrator.hpp"
+#include "dynamics/kernel_arithmetic.hpp"
+#include "dynamics/network_force.hpp"
+#include "dynamics/ordered_sum.hpp"
+#include "dynamics/sincos.hpp"
+#include "network/erdos_renyi.hpp"
+#include "parallel/distributed_network.hpp"
+
+using namespace hmfnet;
+
+namespace {
+
+std::uint64_t bits_of(double x) {
+  std::uint64_t b = 0;
+  std::memcpy(&b, &x, sizeof b);
+  return b;
+}
+
+// The values whose bits differ (a NaN equals only the same NaN), and the first such index.
+struct BitDifference {
+  std::size_t count = 0;
+  std::size_t first = 0;
+};
+
+BitDifference bit_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  BitDifference d;
+  for (std::size_t k = 0; k < a.size() && k < b.size(); ++k) {
+    if (bits_of(a[k]) == bits_of(b[k])) continue;
+    if (d.count++ == 0) d.first = k;
+  }
+  if (a.size() != b.size()) ++d.count;
+  return d;
+}
+
+// [cos, sin] of every angle from sincos_one, interleaved as sincos_interleaved writes them.
+std::vector<double> scalar_sincos(const std::vector<double>& x) {
+  std::vector<double> cs(2 * x.size());
+  for (std::size_t k = 0; k < x.size(); ++k) sincos_one(x[k], cs[2 * k], cs[2 * k + 1]);
+  return cs;
+}
+
+// The scalar against the chosen (AVX2 where the CPU has it) and the baseline vector versions.
+void require_same_sincos(const std::vector<double>& x) {
+  const std::vector<double> scalar = scalar_sincos(x);
+  std::vector<double> chosen(2 * x.size());
+  std::vector<double> baseline(2 * x.size());
+  sincos_interleaved(x.data(), x.size(), chosen.data());
+  sincos_interleaved_baseline(x.data(), x.size(), baseline.data());
+  for (const auto* vector : {&chosen, &baseline}) {
+    const BitDifference d = bit_difference(scalar, *vector);
+    INFO(x.size() << " angles, " << (vector == &chosen ? "chosen" : "baseline")
+                  << " version: " << d.count << " values differ; the first: angle " << std::hexfloat
+                  << x[d.first / 2] << (d.first % 2 == 0 ? " cos " : " sin ") << scalar[d.first]
+                  << " (scalar) against " << (*vector)[d.first]);
+    CHECK(d.count == 0);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("scalar sincos equals the vectorised one bit for bit on 10^6 random angles in +-100",
+          "[kernel_arithmetic]") {
+  std::mt19937_64 rng(2024);
+  std::uniform_real_distribution<double> u(-100.0, 100.0);
+  std::vector<double> x(1000000);
+  for (auto& v : x) v = u(rng);
+  require_same_sincos(x);
+}
+
+TEST_CASE("scalar sincos equals the vectorised one at the doubles nearest k pi/2 up to 10^7",
+          "[kernel_arithmetic]") {
+  // The hard cases of tests/dynamics/test_sincos.cpp: every k up to 2000, then k growing by 1%
+  // to 6.3 10^6 (|x| ~ 10^7), each with both neighbours and both signs, and the angles that were
+  // 20-3900 ulp off before the reduction carried its rounding.
+  const long double half_pi = 1.5707963267948966192313216916397514L;
+  std::vector<double> x = {45.553093477052, 5830.795965062656, 8166.5701030066675,
+                           9436423.844736237};
+  for (double k = 1.0; k < 6.3e6; k = k < 2000.0 ? k + 1.0 : std::ceil(k * 1.01)) {
+    const auto nearest = static_cast<double>(static_cast<long double>(k) * half_pi);
+    for (const double v : {nearest, std::nextafter(nearest, 0.0), std::nextafter(nearest, 1e9)}) {
+      x.push_back(v);
+      x.push_back(-v);
+    }
+  }
+  require_same_sincos(x);
+}
+
+TEST_CASE("scalar sincos equals the vectorised one beyond the reduced range and when not finite",
+          "[kernel_arithmetic]") {
+  // Both sides of kReducedRange, the C library's range, and the values a lane mask must not let
+  // through: infinities, NaNs of both signs, zeros and a subnormal. Each value is also placed at
+  // every lane of a 4-lane vector (the mask is per lane).
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<double> special = {kReducedRange,
+                                       -kReducedRange,
+                                       std::nextafter(kReducedRange, INFINITY),
+                                       -std::nextafter(kReducedRange, INFINITY),
+                                       std::nextafter(kReducedRange, 0.0),
+                                       -1e8,
+                                       123456789.123,
+                                       1e300,
+                                       DBL_MAX,
+                                       INFINITY,
+                                       -INFINITY,
+                                       nan,
+                                       -nan,
+                                       0.0,
+                                       -0.0,
+                                       1e-310};
+  for (const double v : special) {
+    std::vector<double> x = {0.5, 0.5, 0.5, 0.5, 0.5};
+    for (std::size_t lane = 0; lane < x.size(); ++lane) {
+      x[lane] = v;
+      require_same_sincos(x);
+      x[lane] = 0.5;
+    }
+  }
+  require_same_sincos(special);
+}
+
+namespace {
+
+// The network of the step test, with symmetric weights in [1, 2] when asked (a function of the
+// unordered pair), so that both the 0/1 and the weighted row sums are exercised.
+Network step_network(bool weighted) {
+  const Network net = erdos_renyi({300, 0.05, 29});
+  if (!weighted) return net;
+  std::vector<EdgeOffset> row_ptr{0};
+  std::vector<NodeIndex> cols;
+  std::vector<double> w;
+  for (NodeIndex i = 0; i < net.size(); ++i) {
+    for (EdgeOffset k = net.row_begin(i); k < net.row_end(i); ++k) {
+      const NodeIndex j = net.col(k), a = std::min(i, j), b = std::max(i, j);
+      cols.push_back(j);
+      w.push_back(1.0 + static_cast<double>((7 * a + 13 * b) % 11) / 10.0);
+    }
+    row_ptr.push_back(static_cast<EdgeOffset>(cols.size()));
+  }
+  return Network::from_csr(net.size(), std::move(row_ptr), std::move(cols), std::move(w));
+}
+
+// NetworkForce::evaluate composed from the per-element functions, as a device backend composes
+// them: [cos, sin] of the owned rotors, the column space through the network's import, each row
+// and replica summed by row_field in T, then g, y and the two observable terms.
+class HandForce {
+ public:
+  HandForce(const DistributedNetwork& network, ForcePrecision precision)
+      : m_network(network), m_precision(precision) {
+    for (const double w : network.local_adjacency().weights)
+      m_weights_f32.push_back(static_cast<float>(w));
+  }
+
+  void evaluate(const RotorState& state) {
+    const auto& adjacency = m_network.local_adjacency();
+    const int nb = state.replicas;
+    const std::size_t cells = state.theta.size();
+    m_owned_cs.resize(2 * cells);
+    for (std::size_t k = 0; k < cells; ++k)
+      sincos_one(state.theta[k], m_owned_cs[2 * k], m_owned_cs[2 * k + 1]);
+    m_column_cs = m_owned_cs;
+    if (!m_network.columns_are_owned_rows()) {
+      m_column_cs.resize(2 * static_cast<std::size_t>(adjacency.columns) *
+                         static_cast<std::size_t>(nb));
+      m_network.import_columns(m_owned_cs.data(), 2 * nb, m_column_cs.data());
+    }
+    const std::vector<float> column_f32(m_column_cs.begin(), m_column_cs.end());
+    const double inverse_n = 1.0 / static_cast<double>(m_network.global_size());
+    g.assign(cells, 0.0);
+    y.assign(2 * cells, 0.0);
+    std::vector<double> terms(2 * cells);
+    for (NodeIndex r = 0; r < state.rows; ++r) {
+      const EdgeOffset begin = adjacency.row_ptr[static_cast<std::size_t>(r)];
+      const EdgeOffset end = adjacency.row_ptr[static_cast<std::size_t>(r) + 1];
+      for (int b = 0; b < nb; ++b) {
+        const std::size_t k = state.at(r, b);
+        const LocalField field =
+            m_precision == ForcePrecision::float64
+                ? row_field(begin, end, adjacency.cols.data(),
+                            adjacency.weights.empty() ? nullptr : adjacency.weights.data(),
+                            m_column_cs.data(), nb, b)
+                : row_field(begin, end, adjacency.cols.data(),
+                            m_weights_f32.empty() ? nullptr : m_weights_f32.data(),
+                            column_f32.data(), nb, b);
+        const double c = m_owned_cs[2 * k], s = m_owned_cs[2 * k + 1];
+        g[k] = coupling_force(inverse_n, c, s, field);
+        y[2 * k] = field.re;
+        y[2 * k + 1] = field.im;
+        terms[2 * k] = order_term(field);
+        terms[2 * k + 1] = coupling_term(c, s, field);
+      }
+    }
+    ordered_column_sums(terms, static_cast<std::size_t>(state.rows), 2 * nb, term_sums);
+  }
+
+  std::vector<double> g;
+  std::vector<double> y;
+  std::vector<double> term_sums;  // replicas x [sum |y_n|, sum Re(e^{-i theta_n} y_n)]
+
+ private:
+  const DistributedNetwork& m_network;
+  ForcePrecision m_precision;
+  std::vector<float> m_weights_f32;
+  std::vector<double> m_owned_cs;
+  std::vector<double> m_column_cs;
+};
+
+std::vector<double> interleaved_sums(const ForceSums& sums) {
+  std::vector<double> out;
+  for (std::size_t b = 0; b < sums.order.size(); ++b) {
+    out.push_back(sums.order[b]);
+    out.push_back(sums.coupling[b]);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "leap-frog steps composed of the per-element functions equal NetworkForce and LeapFrog "
+    "bit for bit [ER N=300]",
+    "[kernel_arithmetic]") {
+  // Replica counts 1, 2, 4, 8 and 3 take every path of network_force.cpp's dispatch (the
+  // one-replica kernel, the compiled widths with their partials per pass, the run-time width).
+  constexpr double h = 0.05;
+  constexpr int steps = 20;
+  for (const ForcePrecision precision : {ForcePrecision::float64, ForcePrecision::float32}) {
+    for (const bool weighted : {false, true}) {
+      const Network net = step_network(weighted);
+      const DistributedNetwork network(net);
+      for (const int replicas : {1, 2, 3, 4, 8}) {
+        std::vector<InitialCondition> ic;
+        std::vector<double> K;
+        for (int b = 0; b < replicas; ++b) {
+          ic.push_back({6.0, 1.0, static_cast<std::uint64_t>(b + 41)});
+          K.push_back(2.0 + 0.75 * b);
+        }
+        RotorState cpu = initial_state(network.first_row(), network.local_size(), ic);
+        RotorState hand = cpu;
+        NetworkForce force(network, precision);
+        ForceEvaluation f(force);
+        f.update(cpu);
+        HandForce by_hand(network, precision);
+        by_hand.evaluate(hand);
+        const LeapFrog leapfrog;
+        for (int step = 0; step < steps; ++step) {
+          leapfrog.step(cpu, h, K, f);
+          // LeapFrog::advance: kick_drift by (h / 2, h), the force at the new phases, kick by h
+          // / 2.
+          const double half = 0.5 * h;
+          for (NodeIndex r = 0; r < hand.rows; ++r) {
+            for (int b = 0; b < replicas; ++b) {
+              const std::size_t k = hand.at(r, b);
+              const auto kb = static_cast<std::size_t>(b);
+              hand.p[k] = kicked_momentum(hand.p[k], half, K[kb], by_hand.g[k]);
+              hand.theta[k] = drifted_angle(hand.theta[k], h, hand.p[k]);
+            }
+          }
+          by_hand.evaluate(hand);
+          for (NodeIndex r = 0; r < hand.rows; ++r) {
+            for (int b = 0; b < replicas; ++b) {
+              const std::size_t k = hand.at(r, b);
+              hand.p[k] =
+                  kicked_momentum(hand.p[k], half, K[static_cast<std::size_t>(b)], by_hand.g[k]);
+            }
+          }
+        }
+        INFO(to_string(precision) << (weighted ? ", weighted" : ", 0/1") << ", " << replicas
+                                  << " replicas, " << steps << " steps of h = " << h);
+        CHECK(bit_difference(by_hand.g, f.g()).count == 0);
+        CHECK(bit_difference(by_hand.y, force.local_fields()).count == 0);
+        CHECK(bit_difference(by_hand.term_sums, interleaved_sums(f.sums())).count == 0);
+        CHECK(bit_difference(hand.theta, cpu.theta).count == 0);
+        CHECK(bit_difference(hand.p, cpu.p).count == 0);
+      }
+    }
+  }
+}
