@@ -1,6 +1,6 @@
 # Thin front end for the CMake build (the build itself lives in build/).
 #   make paper-figures               quick preset: paper/REPORT.md and paper/figures/ in minutes
-#   make paper-figures PRESET=full   the paper's N, T and K grids (see README for the wall time)
+#   make paper-figures PRESET=full   the paper's N, T and K grids (wall time: docs/verification.md)
 #   make test                        the CI test suite (ci/test.sh)
 PRESET ?= quick
 BUILD ?= build

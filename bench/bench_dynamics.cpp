@@ -3,14 +3,14 @@
 //  - LeapFrogStep/N/degree/replicas/threads/precision: hmfnet's fused kernel (sincos once per
 //    rotor, interleaved [cos, sin] per neighbour for all replicas, Tpetra Import of ghosts), one
 //    step; precision 0 = float64, 1 = float32 gathered table and accumulation;
-//  - YardstickStep/N/degree/threads: issue #16's yardstick, the plain OpenMP CSR loop over an
-//    interleaved [cos, sin] array (one accumulator pair per row, an `omp parallel for` per loop,
-//    the same flags), one step of one replica;
+//  - YardstickStep/N/degree/threads: the yardstick (docs/performance.md, goal 2), the plain
+//    OpenMP CSR loop over an interleaved [cos, sin] array (one accumulator pair per row, an
+//    `omp parallel for` per loop, the same flags), one step of one replica;
 //  - PlainCsrStep: the textbook loop a user would write first: two CSR products over separate
 //    cos and sin arrays, then the kick and drift (1 thread);
 //  - IndexStreamFloor: reading the int32 column array once (the memory floor of any pass);
 //  - RankOneStep/N/replicas/threads/self_loops: one leap-frog step on K_N held implicitly, the
-//    O(N) rank-one force (the complete-graph drivers of issue #17); rotors x replicas x steps
+//    O(N) rank-one force (the complete-graph verification drivers); rotors x replicas x steps
 //    per second.
 #include <benchmark/benchmark.h>
 #include <omp.h>

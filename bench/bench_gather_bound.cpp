@@ -1,4 +1,4 @@
-// The hardware limit of the force kernel (issue #16 goal 5), measured rather than assumed: the
+// The hardware limit of the force kernel (docs/performance.md, goal 5), measured, not assumed: the
 // kernel's irreducible work is, per stored entry, one index read from a stream and one gather of
 // a record of 2B values of T (the [cos, sin] of B replicas) added into accumulators. These
 // benchmarks do exactly that and nothing else (no sin/cos, no kick, no sums), so their rate is

@@ -1,9 +1,9 @@
 // Network generation benchmarks, each beside its floor measured in the same run:
-//  - ErdosRenyi: the generator (N = 10^6, mean degree 100 is the target: <= 3 s);
+//  - ErdosRenyi: the generator (N = 10^6, mean degree 100; the target: <= 3 s);
 //  - GeometricSkipFloor: only the random draws and logs of the skipping (compute floor);
 //  - StreamWriteFloor: writing nnz int32 column indices once (memory floor: the CSR must be
 //    written at least once).
-// Ratios generator / floor are what the README reports.
+// Ratios generator / floor are what docs/performance.md reports.
 #include <benchmark/benchmark.h>
 
 #include <cmath>

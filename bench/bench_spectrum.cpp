@@ -1,4 +1,4 @@
-// Largest-eigenvalue benchmarks: Anasazi's Perron solve (issue target: ER N = 10^4, degree 100
+// Largest-eigenvalue benchmarks: Anasazi's Perron solve (target: ER N = 10^4, degree 100
 // in <= 0.1 s) beside one Tpetra sparse product A x on the same matrix, so the solve can be read
 // as a count of products (a Krylov method needs at least one per iteration), and beside the
 // streaming floor of one product (nnz * (4 + 8) bytes of index and value read once).

@@ -1,4 +1,4 @@
-// Self-consistent solver benchmarks (issue #4 target: one solve of eq:rSigmaBesselMain for ER
+// Self-consistent solver benchmarks (target: one solve of eq:rSigmaBesselMain for ER
 // N = 10^4, mean degree 100 in <= 50 ms per K, at K = 1.05 K_c and 2 K_c). Each solve is shown
 // with its count of map evaluations (one sparse product with A and N evaluations of v each), beside
 // the paper's plain fixed-point iteration (capped at 5000 evaluations) and the cost of one map

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Throughput of `hmfnet simulate` (nnz * steps per second of the integration loop, as the CLI
 # reports it) for 1 and 2 threads, 1 and 2 MPI ranks, B = 1, 4, 8 replicas and the float32
-# kernel (1 thread), on the networks; all in one run so the ratios are comparable. Run on an idle machine (OpenMP's
+# kernel (1 thread), on the benchmark's networks; all in one run so the ratios are comparable. Run on an idle machine (OpenMP's
 # default active waiting is the fast choice there). Throughput counts every replica's work.
 # Usage: bench/dynamics_throughput.sh [BUILD_DIR (default build)] [--large]
 #   --large adds ER N = 25,000, degree 5,000 (1.25e8 nnz; ~6 GB with the Tpetra copy).

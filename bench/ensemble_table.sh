@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Issue #16's whole table in one run (goals 1-5): hmfnet's leap-frog step (LeapFrogStep) beside
-# the plain OpenMP CSR yardstick (YardstickStep), the measured gather bound of the same table
+# The kernel's whole table in one run (docs/performance.md, goals 1-5): hmfnet's leap-frog step
+# (LeapFrogStep) beside the plain OpenMP CSR yardstick (YardstickStep), the measured gather bound
+# of the same table
 # (GatherBound) and the floor it makes with the kernel's one sincos per rotor (SincosFloor;
 # glibc's scalar sincos, which it replaced, in SincosLibc; all in bench_gather_bound.cpp), at
 # N = 10^4 and 10^6 (ER, mean degree 100), 1 and 2 threads, B = 1, 4, 8 replicas, float64 and

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Node ordering as a lever for large N (issue #16 item 4): the force kernel's rate per stored
+# Node ordering as a lever for large N (docs/performance.md): the force kernel's rate per stored
 # entry at N = 10^6, degree 100, 1 thread, B = 1, float64 and float32, with the nodes as given,
 # in reverse Cuthill-McKee order and by degree (`hmfnet convert --order rcm|degree`), on three
 # networks: ER (no structure: no order can narrow its band), scale-free Chung-Lu alpha = 2.5 (hubs

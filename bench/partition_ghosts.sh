@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# What a graph partition (Zoltan2, `hmfnet convert --partition P`) buys per step (issue #15
-# item 4): ghosts per rank, bytes imported per force evaluation and ms per step, with and
+# What a graph partition (Zoltan2, `hmfnet convert --partition P`) buys per step
+# (docs/scaling.md): ghosts per rank, bytes imported per force evaluation and ms per step, with and
 # without it, on a two-block SBM whose node labels were shuffled (as a network from elsewhere
 # comes: its rows as given cut the blocks at random) and on ER (where no partition can help).
 # The SBM as generated (blocks in label order) is the ideal reference. Ghosts and bytes at

@@ -3,7 +3,7 @@
 # into hmfnet HDF5), `hmfnet spectrum`, `hmfnet theory` (three K) and `hmfnet simulate` (20
 # leap-frog steps) on ER
 # N = 10^6, mean degree 100 (10^8 stored entries), read by row blocks, on 1 and 2 MPI ranks
-# (issue #15, items 2 and 3). Each rank reports its own peak
+# (docs/scaling.md, "Memory per rank"). Each rank reports its own peak
 # (getrusage) in the JSON (`peak_rss_mb_per_rank`); the budget is summed over the ranks:
 #   10 bytes per stored entry + 400 bytes per node + 250 MB per rank.
 # The demonstration of item 5 (ER N = 10^7, degree 100: 10^9 stored entries, on 2 ranks) is

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # What a rank imports per force evaluation and what it computes, against the rank count P
-# (issue #15 item 6, docs/scaling.md): ER and scale-free (Chung-Lu, alpha = 2.5) networks of N
+# (docs/scaling.md): ER and scale-free (Chung-Lu, alpha = 2.5) networks of N
 # nodes and mean degree D, generated to HDF5 and simulated for a short window at P = 1, 2, 4
 # ranks (oversubscribed ranks are fine: the ghost counts and bytes do not depend on timing; the
 # times do, so read them at P <= 2 on this 2-core machine only).

@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """Per-step compute and import time per rank against the rank count P for the row-distributed
-force kernel (docs/scaling.md, issue #15 item 6), from two measured inputs and one assumption:
+force kernel (docs/scaling.md), from two measured inputs and one assumption:
 
   rate   stored entries per second per core of the force kernel with its [cos, sin] table out of
-         cache (measured: 0.34-0.38 Gnnz*steps/s at N = 10^6, issue #16; default 0.35e9)
+         cache (measured: 0.34-0.38 Gnnz*steps/s at N = 10^6, docs/performance.md; default 0.35e9)
   ghosts per rank of a row block: N (1 - 1/P) (1 - exp(-D/P)) for ER (a node outside the block
          is referenced unless none of the block's N/P rows links to it); measured 0.500 N and
          0.750 N at P = 2 and 4 (bench/scaling_bytes.sh, N = 10^5, D = 100), 0.505 N and 0.760 N

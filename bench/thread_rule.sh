@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The default thread count against the best one (issue #16, goal 1): `hmfnet simulate` on ER
+# The default thread count against the best one (docs/performance.md): `hmfnet simulate` on ER
 # networks from 500 to 10^7 stored entries and on complete graphs (the rank-one force: no stored
 # entries, only rows) with 1 to 16 replicas, with --threads 1, --threads 2 and the default
 # (src/dynamics/thread_choice.hpp), under OMP_WAIT_POLICY unset, ACTIVE and PASSIVE; all in one

@@ -1,4 +1,4 @@
-# Install and packages (issue #18):
+# Install and packages (README, "Quick start"):
 #   cmake --install build --prefix P   the CLI (bin/hmfnet), the library (static archives, their
 #                                      headers under include/hmfnet, the shared provenance
 #                                      library), a CMake package (lib/cmake/hmfnet) and the Python

@@ -1,4 +1,4 @@
-// Verification (beyond the paper, issue #17 4a): the caloric curve of the all-to-all HMF.
+// Verification (beyond the paper): the caloric curve of the all-to-all HMF.
 //
 // Claim: on the complete graph with self-loops (A = 1 1^T, lambda = N) at K = 1 the model of
 //   eq:hamiltonianNetworkCase is the HMF of Antoni & Ruffo (1995), whose equilibrium is the
@@ -29,7 +29,7 @@
 //   d_inf = 2 d_2N - d_N, SE_inf = sqrt(4 SE_2N^2 + SE_N^2); pass |d_inf| <= t SE_inf with t the
 //   two-sided 99% Student multiplier for 8 replicas (3.50; support/sample_statistics.hpp).
 //   Stationarity: the window's two halves agree within t SE at 2N, or the run has not relaxed
-//   (a quasi-stationary state: the near-onset gap of issue #17 e), which fails the check.
+//   (a quasi-stationary state: the near-onset gap, near_onset_gap.cpp), which fails the check.
 //   Checked only where the mean-field finite-size scaling variable |T / T_c - 1| sqrt(N) is >= 1
 //   at the smaller N (T of the canonical solution, T = 2U - 1 + M^2): inside that region the
 //   correction is not O(1/N). At CI scale U = 0.65 and 0.7 fall inside and are reported.

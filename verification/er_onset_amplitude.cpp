@@ -4,7 +4,7 @@
 // Claim: "We find G = 0.633 for the Erdos-Renyi network" (N = 10^4, q = 0.01, ||d|| = 100).
 // Run:   verification_er_onset_amplitude [--scale ci|full]   (ctest -L verification)
 // Reference: the paper's G = 0.633.
-// Tolerance: 2% (issue #2). For ER, G = sqrt(2/5) (lambda/||d||) (1 + O(1/||d||)): the Perron
+// Tolerance: 2%. For ER, G = sqrt(2/5) (lambda/||d||) (1 + O(1/||d||)): the Perron
 //   vector follows the Poisson(100) degrees, whose relative spread 1/sqrt(||d||) = 0.1 enters the
 //   moment ratio at second order (~1%); between realisations G varies by ~1e-4, which we measure
 //   and print over 3 seeds. At full scale, 10 seeds.

@@ -1,7 +1,7 @@
-// Verification (beyond the paper, issue #17 4e): the near-onset gap, a lag or the stationary state?
+// Verification (beyond the paper): the near-onset gap, a lag or the stationary state?
 //
-// Question: near onset the simulated <R>_t sits below eq:rSigmaBesselMain (README, "NOT
-//   reproduced"; simulation_vs_theory.cpp, the onset sweeps). Is that where the system stays
+// Question: near onset the simulated <R>_t sits below eq:rSigmaBesselMain (docs/near_onset.md,
+//   NOT reproduced; simulation_vs_theory.cpp, the onset sweeps). Is that where the system stays
 //   (the theory is off there), or has it not relaxed by the paper's T? If it lags, does the
 //   time to relax grow with N (as the lives of the HMF's quasi-stationary states do:
 //   qss_lifetime.cpp), only with 1 / (K/K_c - 1) (critical slowing down), or with the degree?
@@ -40,17 +40,17 @@
 //     it further: qss_lifetime.cpp). Checked: K_N's late deficit (averaged over the K) at the
 //     largest N exceeds that at the smallest; at the largest N, K_N (d = N - 1) lags more than
 //     ER (d = 100). ER's |gap| against N at fixed d is reported (power law per K); one degree
-//     only, so "the length follows d" is what K_N against ER suggests, not a d sweep (issue #17
-//     item 4d). ER's gap also holds the theory's own approximation error on a sparse network;
+//     only, so "the length follows d" is what K_N against ER suggests, not a d sweep
+//     (qss_networks.cpp sweeps d). ER's gap also holds the theory's own approximation error on a
+//     sparse network;
 //   - every self-consistent solve converged.
 //   tau measures the fast first rise, not the slow closing of the gap.
-// Found (CI scale, session 15): the gap closes with time everywhere (the late gap is smaller in
-//   17 of 18 scenes); on K_N at 1.5 K_c the late gap is -0.070, -0.098, -0.125 (+- 0.006) at
-//   N = 500, 1000, 2000, on ER -0.010, -0.027, -0.017 (+- 0.007): on K_N the gap grows with N,
-//   on ER at fixed d it does not. Full scale (session 18, paper/full/beyond/REPORT.md, 1184 s
-//   at 2 threads): the same, 18 of 18 scenes; at 1.5 K_c K_N -0.051, -0.093, -0.133 (+- 0.003 -
-//   0.006) at N = 1000, 3000, 10^4, ER -0.009, -0.009, -0.010 (+- 0.001 - 0.003), where R(t)
-//   has stopped moving by t ~ 4000, 2.4-2.8% below the theory at every N (README, "Near onset").
+// Found (CI scale; the numbers move with the trajectories' last bits: paper/REPORT.md): the gap
+//   closes with time; on K_N the gap grows with N, on ER at fixed d it does not. Full scale
+//   (commit 67bf11b, paper/full/beyond/REPORT.md, 1184 s at 2 threads): the same, 18 of 18
+//   scenes; at 1.5 K_c K_N -0.051, -0.093, -0.133 (+- 0.003 - 0.006) at N = 1000, 3000, 10^4,
+//   ER -0.009, -0.009, -0.010 (+- 0.001 - 0.003), where R(t) has stopped moving by t ~ 4000,
+//   2.4-2.8% below the theory at every N (docs/near_onset.md).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

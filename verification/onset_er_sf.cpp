@@ -37,7 +37,7 @@
 //   the per-point error (largest 0.013 against 0.016-0.03), mean difference -0.006 (about 0.03 in
 //   x_on through the fit); with 8 replicas at x = 0, 1.2, 2: 0.000, -0.001, +0.009 against
 //   errors 0.0008, 0.010, 0.009.
-// Replicas: 3 at both scales. With 1 replica (the full preset until session 6) a point's error is
+// Replicas: 3 at both scales. With 1 replica (the full preset until b4de98a) a point's error is
 //   the batch-means SEM of one trajectory alone, and the fit se (0.002-0.012) missed most of the
 //   run-to-run spread of x_on: the same networks and seeds run at h = 0.01 and at the steps of
 //   support/pipeline_step.hpp moved x_on by -0.078 ... +0.070 over the 17 curves of the three

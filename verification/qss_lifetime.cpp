@@ -1,4 +1,4 @@
-// Verification (beyond the paper, issue #17 4c): the life of the quasi-stationary state of the
+// Verification (beyond the paper): the life of the quasi-stationary state of the
 // all-to-all HMF from a homogeneous water-bag at U = 0.69.
 //
 // Claim (Yamaguchi, Barre, Bouchet, Dauxois & Ruffo, Physica A 337 (2004) 36): on K_N at K = 1
@@ -10,13 +10,14 @@
 // Run:   verification_qss_lifetime [--scale ci|full] [--output F.h5]
 //        ci: N = 100, 200, 400; full: N = 200, 400, 800, 1600. 16 replicas per N in one pass
 //        (rank-one force), Omega = 0, leap-frog h = 0.1 (h sqrt(K) = 0.1; the energy error is
-//        reported), R recorded every time unit, for T(N) = 0.6 N^1.7 time units (2.7 to 4 lives
-//        of those measured: 603, 1268 and 3981 at N = 100, 200, 400).
-//        The paper-scale N = 10^3 .. 2 10^4 of the issue is not run: extrapolated from the full
+//        reported), R recorded every time unit, for T(N) = 0.6 N^1.7 time units (about 3 to 4
+//        lives of those measured at CI scale: paper/REPORT.md).
+//        The literature's N = 10^3 .. 2 10^4 is not run: extrapolated from the full
 //        scale's lives, N = 2 10^4 lives ~9 10^5 (N^1.39) to ~2 10^6 (N^1.7) time units, and at
 //        the measured 7.2 ns per rotor and replica step (2 threads) T of ~3 lives for 16
-//        replicas is 17-38 hours of this 2-core machine for that N alone (README).
-//        Found at full scale (session 19, paper/full/beyond/): lives 1195 +- 288, 4578 +- 634,
+//        replicas is 17-38 hours of this 2-core machine for that N alone
+//        (docs/results_beyond_the_paper.md).
+//        Found at full scale (paper/full/beyond/): lives 1195 +- 288, 4578 +- 634,
 //        10644 +- 1874, 26313 +- 3755 at N = 200 .. 1600, N^(1.39 +- 0.11).
 // Lifetime (a stated rule): the replica mean R(t), smoothed by a running mean over 50 time
 //   units, first passes half way from its initial level (the mean of the records t = 1 .. 50)

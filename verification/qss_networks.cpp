@@ -1,4 +1,4 @@
-// Verification (beyond the paper, issue #17 4d): the water-bag quasi-stationary state on networks.
+// Verification (beyond the paper): the water-bag quasi-stationary state on networks.
 //
 // Question: on the complete graph the water-bag QSS at U = 0.69 lives ~ N^1.4-1.9 at these N
 //   (qss_lifetime.cpp; N^1.7 in the literature at N = 10^3 .. 2 10^4): its relaxation is driven by
@@ -20,7 +20,7 @@
 //     ci:   N = 200, d = 20, 50, 100;   full: N = 400, d = 20, 50, 100, 200.
 //   16 replicas per scene in one pass (K_N at full scale: 64, because a single K_N life spreads
 //   over a factor ~3 between replicas and the outlives check below compares K_N's N = 400 life
-//   with d = 200's: with 16 its se was 28%, session 18), leap-frog h = 0.1 (the energy error is
+//   with d = 200's: with 16 its se was 28% at full scale), leap-frog h = 0.1 (the energy error is
 //   reported), R every time unit, T = 0.6 N^1.7 time units (qss_lifetime's budget: 3.5 to 5 K_N
 //   lives), on the networks capped at that of N = 200 (ci, 4900) or 400 (full, 16,000): a network
 //   QSS that outlived the budget would be censored, and the first check below would fail (through
@@ -45,26 +45,27 @@
 //     1.47 and 1.57 against 3 se = 0.55 and 0.52). At CI scale (three N over a 4x range, 16
 //     replicas) the difference, ~1.4-1.5, is only ~3-4.5 se of its error, so the check passed
 //     there by chance: with the previous sincos RR 4.3 se and ER 4.3 se, with the vectorised
-//     one (session 17; every trajectory differs in its last bits) RR 3.5 se and ER 2.7 se
+//     one (every trajectory differs in its last bits) RR 3.5 se and ER 2.7 se
 //     (ER 0.44 +- 0.33 against K_N 1.70 +- 0.32). There both exponents are reported;
 //   - every self-consistent solve converged.
 // Reported: the exponents; each network life against K_N's fitted law at N = d + 1 (does a
 //   network live as K_N with its degree would?); the RR / ER life ratio at each d; the initial
 //   and late levels against R_th.
-// Found (session 16). CI: K_N N^(1.88 +- 0.23); d = 20: RR N^(0.53 +- 0.21), ER N^(0.33 +- 0.28);
-//   at N = 200 RR lives 113, 134, 255 at d = 20, 50, 100 against K_N's 991. Full: K_N
-//   N^(1.76 +- 0.16) over N = 200 .. 800; d = 20: RR N^(0.29 +- 0.09), ER N^(0.19 +- 0.07) over
-//   N = 200 .. 3200; at N = 400 RR lives 149, 231, 533, 1226 at d = 20 .. 200 (K_N 3928): 7.5,
-//   2.4, 1.7 and 1.15 times K_N's law at N = d + 1. From d ~ 100 a network lives as the
-//   complete graph with its degree would; at d = 20 something else ends the QSS first.
-//   Full, session 18 (after the vectorised sincos; paper/full/beyond/): K_N N^(1.70 +- 0.12),
+// Found (commit 849bccd). CI: K_N N^(1.88 +- 0.23); d = 20: RR N^(0.53 +- 0.21),
+//   ER N^(0.33 +- 0.28); at N = 200 RR lives 113, 134, 255 at d = 20, 50, 100 against K_N's 991.
+//   Full: K_N N^(1.76 +- 0.16) over N = 200 .. 800; d = 20: RR N^(0.29 +- 0.09),
+//   ER N^(0.19 +- 0.07) over N = 200 .. 3200; at N = 400 RR lives 149, 231, 533, 1226 at
+//   d = 20 .. 200 (K_N 3928): 7.5, 2.4, 1.7 and 1.15 times K_N's law at N = d + 1. From d ~ 100 a
+//   network lives as the complete graph with its degree would; at d = 20 something else ends the
+//   QSS first.
+//   Full, after the vectorised sincos (commit 8831170): K_N N^(1.70 +- 0.12),
 //   RR N^(0.22 +- 0.08), ER N^(0.19 +- 0.09), d exponents 0.99 and 1.16, but the two
 //   "K_N outlives d = 200" checks fail at 2.3 and 1.9 se: K_N's N = 400 life, 2774 +- 779 with 16
 //   replicas, fell below its own fitted law (~3150). The check needs more K_N replicas: 64 since
-//   session 19 (decided before the run, the check and its 3 se unchanged). Full, session 19:
-//   all 44 checks pass; K_N 865 +- 88, 2853 +- 308, 9508 +- 392 at N = 200, 400, 800,
-//   N^(1.73 +- 0.08); at N = 400 K_N outlives d = 200 by 1876 (RR) and 1550 (ER), 3 se = 957 and
-//   1009 (1712 s at 2 threads).
+//   then (decided before the run, the check and its 3 se unchanged). Full, with 64 (the data in
+//   paper/full/beyond/): all 44 checks pass; K_N 865 +- 88, 2853 +- 308, 9508 +- 392 at
+//   N = 200, 400, 800, N^(1.73 +- 0.08); at N = 400 K_N outlives d = 200 by 1876 (RR) and
+//   1550 (ER), 3 se = 957 and 1009 (1712 s at 2 threads).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

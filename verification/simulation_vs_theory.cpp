@@ -14,7 +14,7 @@
 //        at K_c / 2, blanes_moan 0.16 at 2-3 K_c, 0.08 at 4 K_c; SF, sigma0 = 1: leap-frog 0.08,
 //        0.04 at 4 K_c) instead of the paper's leap-frog
 //        h = 0.01.
-//        The sweep (Fig. R_vs_K_theoretical as the paper shows it, issue #17 4f): 17 K/K_c from 0
+//        The sweep (Fig. R_vs_K_theoretical as the paper shows it): 17 K/K_c from 0
 //        to 4.5, each continuing from the state the previous one left (the paper's protocol),
 //        the same replicas, per K the pipeline's method; T2 = 1000, T1 = 500 per K at full
 //        scale, T2 = 80, T1 = 40 at CI scale. At full scale its points at K/K_c >= 2 are
@@ -41,17 +41,17 @@
 //   below it than over the first half (+ 2 sqrt(2) SEM, the noise of the difference of two
 //   half-window means). At full scale (the paper's T) the agreement itself is checked, and
 //   fails for ER at 2 and 3 K_c (reported, not tuned). That too is the lag: the same scene run
-//   to T = 4000 (docs/scripts/er_long_window.sh, session 7) closes the gap at 2 K_c from -0.022
+//   to T = 4000 (docs/scripts/er_long_window.sh) closes the gap at 2 K_c from -0.022
 //   over [500, 1000] to -0.013, -0.009 and -0.007 over [1000, 2000], [2000, 3000] and
 //   [3000, 4000] (se <= 0.002), and at 3 K_c from -0.010 to -0.003; the paper's T is too short
 //   for N = 10^4 at these K. The sweep, which reaches each K from a synchronized state, does not
-//   lag: at full scale (session 18, paper/full/beyond/) all its K >= 2 K_c points pass on ER and
+//   lag: at full scale (paper/full/beyond/) all its K >= 2 K_c points pass on ER and
 //   SF (|diff| <= 0.0076), while the restart points fail again at ER 2 and 3 K_c and, at the
 //   edge, SF 3 K_c (diff -0.0097 against a tolerance of 0.0096).
 // Tolerance per point: |<R>_sim - R_theory| <= 3 se + delta_fs. se: the standard error of the
 //   replica-mean gap, the larger of the batch-means SEM of <R>_t (20 batches, combined over
 //   replicas) and the replica sd of each replica's own gap <R>_t - R_theory over sqrt(B). The SEM
-//   alone is not enough: at full scale with 2 replicas (session 6, ER 2 K_c) the replica sd of
+//   alone is not enough: at full scale with 2 replicas (an earlier run, ER 2 K_c) the replica sd of
 //   <R>_t was 0.0060 against an SEM of 0.0005, i.e. the 20 batches of one trajectory are not
 //   independent while the state still relaxes; hence 4 replicas at full scale. delta_fs = sqrt(R^2
 //   + R_floor^2) - R: the incoherent part of each local field (variance <= d/N^2 per node, 1 - v^2

@@ -1,6 +1,6 @@
 // Measurement and verification: how the self-consistent solver of eq:rSigmaBesselMain converges
 // as K -> K_c+, with and without acceleration, and on the networks where the paper's plain
-// fixed-point iteration fails (issue: "where each method fails").
+// fixed-point iteration fails (where each method fails).
 //
 // Claims: (a) the paper's plain iteration slows down as K -> K_c+ like 1/(K/K_c - 1): at the
 //   nontrivial fixed point the map's Jacobian has, along the Perron mode, the eigenvalue

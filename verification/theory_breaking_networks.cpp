@@ -1,6 +1,6 @@
 // Measurement: the gap between simulation and the self-consistent theory (eq:rSigmaBesselMain) on
-// networks that break the theory's assumptions, beside an ER control (issue: "where each method
-// fails"; the paper tests only ER and scale-free networks).
+// networks that break the theory's assumptions, beside an ER control (where each method
+// fails; the paper tests only ER and scale-free networks).
 //
 // What breaks: the onset analysis (Sec. approxOnsetSynchrony, eq:criticalKFirstOrder) assumes a
 //   simple, isolated Perron eigenvalue with a positive eigenvector; the self-consistent state

@@ -1,4 +1,4 @@
-// Verification (beyond the paper, issue #17 4b): the water-bag's linear threshold and growth rate.
+// Verification (beyond the paper): the water-bag's linear threshold and growth rate.
 //
 // Claim: eq:gDashPSGammaPlusOmega holds for any momentum density g. For the water-bag (uniform on
 //   Omega +- D, D = sqrt(3) sigma0: the Gaussian's mean and sd) g' is two delta functions and
@@ -23,7 +23,7 @@
 // Reference and tolerance:
 //   A. (K_N; on ER the part below K_c^wb is reported, not checked: there R leaves the floor
 //      within tens of time units, 0.09 -> 0.37 by t = 30 at d = 100 and 0.05 -> 0.29 by t = 45
-//      at d = 400, while K_N stays at its floor; open, README.)
+//      at d = 400, while K_N stays at its floor; open: docs/results_beyond_the_paper.md.)
 //      Below K_c^wb the incoherent state is a stable Vlasov equilibrium: the finite-N noise
 //      (R(0) ~ N^-1/2) drives its undamped mode (eps(s) = (s^2 + omega^2) / (s^2 + D^2),
 //      omega^2 = D^2 (1 - K/K_c^wb): the response is amplified by about (K/K_c^wb) / (1 -
@@ -185,13 +185,13 @@ void threshold(ClaimCheck& check, const Graph& small, const Graph& large, const 
     if (kappa > 1.0) {
       unstable(what, q);
     } else if (!small.complete) {
-      // Found, not yet explained (README, issue #17 d): on ER the water-bag below K_c^wb leaves
-      // its floor within tens of time units, which K_N at the same kappa does not.
+      // Found, not yet explained (docs/results_beyond_the_paper.md): on ER the water-bag below
+      // K_c^wb leaves its floor within tens of time units, which K_N at the same kappa does not.
       check.report(what, q.value, 0.5,
                    "not checked: on ER the incoherent water-bag does not stay at its floor below "
                    "K_c^wb (late R " +
                        ClaimCheck::format(q.small) + " and " + ClaimCheck::format(q.large) +
-                       "); see the README");
+                       "); see docs/results_beyond_the_paper.md");
     } else {
       check.within_abs(what, q.value, 0.5, t * q.se,
                        "1/2: a stable state's noise follows the floor; " + why_t);

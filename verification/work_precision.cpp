@@ -1,4 +1,4 @@
-// Verification and measurement: speed against accuracy of the integrators (issue: work-precision
+// Verification and measurement: speed against accuracy of the integrators (work-precision
 // charts), on the scenes of the paper's figures.
 //
 // Claims: (a) the energy error of leap-frog falls as h^2 and that of the 4th-order symplectic

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Reproduce the README's "Near onset" remainder test: at full scale (near_onset_gap, T = 10^4)
+# Reproduce the near-onset remainder (docs/near_onset.md): at full scale (near_onset_gap, T = 10^4)
 # ER with degree 100 at 1.5 K_c stops moving by t ~ 4000 at 2.4-2.8% below eq:rSigmaBesselMain,
 # at every N. Is that remainder the theory's own error on a sparse network (eq:bkApprox, which
 # should shrink with the degree, like 1 / d if it is the first correction) or a lag set by the
@@ -13,8 +13,8 @@
 # (near_onset_gap's method), 8 replicas (seeds 1-8). Printed per degree: <R>_t over
 # [2000, 4000), [4000, 6000), [6000, 8000), [8000, 10000), the theory, the gap and gap x d (a
 # constant gap x d over the degrees, flat in time, says a 1 / d error of the theory; a gap that
-# still shrinks with time says a lag). About 4 min at 2 threads. Output (session 18; the README's
-# "Near onset" row): gap over the four windows, d = 30: -0.0244, -0.0222, -0.0239, -0.0235;
+# still shrinks with time says a lag). About 4 min at 2 threads. Output (defaults;
+# docs/near_onset.md): gap over the four windows, d = 30: -0.0244, -0.0222, -0.0239, -0.0235;
 # d = 100: -0.0151, -0.0134, -0.0137, -0.0093; d = 300: -0.0260, -0.0152, -0.0088, -0.0085
 # (se 0.0010-0.0036): not 1 / d (gap x d -0.70 against -2.55), closer to 1 / sqrt(d).
 # Needs python3 with h5py and numpy (Debian's /usr/bin/python3, ci/install-deps.sh).

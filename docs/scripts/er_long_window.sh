@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Reproduce "Simulation against theory at the paper's T: a lag" (README, Fig. 6 row): at
+# Reproduce "Simulation against theory at the paper's T: a lag" (docs/verification.md, Fig. 6): at
 # N = 10^4 the ER runs of verification/simulation_vs_theory.cpp sit 2-4% below
 # eq:rSigmaBesselMain over the paper's window [T1, T2] = [500, 1000]. Is that a lag (the HMF
 # model's slow relaxation from the incoherent start) or a bias of the theory? This runs the same
@@ -10,7 +10,7 @@
 # Scene: ER N = 10^4, q = 0.01 (seed 1), sigma0 = 0.34641016 (sqrt(0.12) to 8 digits), Omega = 6,
 # K = 2 and 3 K_c, each from the incoherent start (--restart-each-K, as the driver), T = 4000,
 # blanes_moan h = 0.16 (the pipeline's step at 2-3 K_c), 4 replicas (seeds 1-4). About 18 min on
-# one core. Output (session 7; the README's Fig. 6 row): the gap at 2 K_c -0.0220, -0.0132,
+# one core. Output (defaults; docs/verification.md, Fig. 6): the gap at 2 K_c -0.0220, -0.0132,
 # -0.0089, -0.0073 over [500, 1000], [1000, 2000], [2000, 3000], [3000, 4000]; at 3 K_c -0.0096,
 # -0.0057, -0.0032, -0.0033.
 # Needs python3 with h5py and numpy (Debian's /usr/bin/python3, ci/install-deps.sh).

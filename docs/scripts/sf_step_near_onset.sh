@@ -19,7 +19,7 @@
 # points are correlated (the state carries over), so per-x t values would overstate the
 # evidence. Needs python3 (standard library).
 # Cost per replica on one core: ~8 s at h = 0.32, 16 s at 0.16, 65 s at 0.04 (0.01: ~260 s).
-# Output (session 7, defaults; docs/choosing_a_method.md): window x = 1.1-1.5 0.1632 +- 0.0014
+# Output (defaults; docs/choosing_a_method.md): window x = 1.1-1.5 0.1632 +- 0.0014
 # at h = 0.32 against 0.1642 +- 0.0016 at 0.16, difference -0.0010 +- 0.0022.
 set -euo pipefail
 

@@ -1,4 +1,4 @@
-"""Antoni-Ruffo caloric curve on the complete graph (beyond the paper, issue #17 4a): the
+"""Antoni-Ruffo caloric curve on the complete graph (beyond the paper): the
 long-time magnetisation <M>_t of microcanonical runs on K_N (A = 1 1^T, K = 1) from the incoherent
 start, against the canonical M(U) (eq:rSigmaBesselMain on K_N: M = I1(M/T)/I0(M/T),
 U = T/2 + (1 - M^2)/2, U_c = 3/4) and, above U_c, the finite-N floor

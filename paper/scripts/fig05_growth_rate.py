@@ -39,11 +39,11 @@ def main():
     left.set_ylabel("R(t)")
     left.set_ylim(0.01, 1.0)
     left.legend(loc="lower right")
-    left.set_title("R(t), thick: fit window (replica 0); dashed: slope gamma of eq:gammaKKc")
+    left.set_title("R(t), thick: fit window (replica 0); dashed: slope gamma of eq. (14)")
     xs = summary["K/K_c"]
-    right.plot(xs, summary["gamma eq:gammaKKc"], "k-s", ms=4, label="eq:gammaKKc")
+    right.plot(xs, summary["gamma eq:gammaKKc"], "k-s", ms=4, label="gamma, eq. (14)")
     right.plot(xs, summary["gamma eq:lambdaHat sample"], "k:",
-               label="eq:lambdaHat (sample momenta)")
+               label="eq. (12), the sample's momenta")
     right.errorbar(xs, summary["slope mean"], yerr=3 * summary["slope SEM"], fmt="o",
                    color="tab:blue", capsize=3, label="fitted slope (3 SEM over seeds)")
     right.set_xlabel("K / K_c")

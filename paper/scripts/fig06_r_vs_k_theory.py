@@ -17,7 +17,8 @@ import hmfdata
 def panel(ax, result, name, title):
     points = result.table(f"{name}_points")
     curve = result.table(f"{name}_theory")
-    ax.plot(curve["K/K_c"], curve["theory"], "k-", lw=1.2, label="eq:rSigmaBesselMain (sigma0)")
+    ax.plot(curve["K/K_c"], curve["theory"], "k-", lw=1.2,
+            label="self-consistent theory, eq. (33) (sigma0)")
     ax.plot(curve["K/K_c"], curve["G sqrt(dK/K_c)"], "r--", lw=1.0, label="G sqrt(dK/K_c)")
     x, R = points["K/K_c"], points["R"]
     ax.errorbar(x, R, yerr=points["replica sd"], fmt="o", color="tab:blue",

@@ -44,7 +44,8 @@ def main():
                  np.interp(pc, tp["p_bar"], tp["density"]))
     vmax = max(g.max(), hist.max())
     fig, axes = plt.subplots(2, 2, figsize=(9.5, 7.5), constrained_layout=True)
-    for ax, z, title in ((axes[0, 0], g, f"(a) eq:gFunction, beta = {beta:.4g}, r_0 = {r0:.4g}"),
+    for ax, z, title in ((axes[0, 0], g, f"(a) Boltzmann density eq. (24), beta = {beta:.4g}, "
+                                         f"r_0 = {r0:.4g}"),
                          (axes[0, 1], hist, f"(b) node 0: {len(samples)} samples, t in "
                                             f"[{t1:g}, {t2:g}]")):
         ax.grid(False)

@@ -25,8 +25,8 @@ def main():
     network = sim.notes.get("network", "")
 
     fig, (left, right) = plt.subplots(1, 2)
-    left.plot(alpha, rd, "k--", lw=1.0, label="eq:rd")
-    left.plot(alpha, R_hat, "^", color="tab:red", ms=7, label="eq:KtoInfinity (N = 10^4)")
+    left.plot(alpha, rd, "k--", lw=1.0, label="degree approximation, eq. (42)")
+    left.plot(alpha, R_hat, "^", color="tab:red", ms=7, label="R_hat, eq. (39) (N = 10^4)")
     left.errorbar(a_sim, R_sim, yerr=sem, fmt="o", color="tab:blue", mfc="none", capsize=3,
                   label=f"<R>_t, K/K_c = {ratio.min():.0f}-{ratio.max():.0f}")
     left.set_xlabel("alpha")
@@ -40,7 +40,7 @@ def main():
     right.errorbar(a_sim, 100 * (R_sim / R_hat_sim - 1), yerr=100 * sem / R_hat_sim, fmt="o",
                    color="tab:blue", mfc="none", capsize=3, label="<R>_t")
     right.plot(a_sim, 100 * (R_K / R_hat_sim - 1), "x", color="k", ms=6,
-               label="eq:rSigmaBesselMain at K (run's E, P)")
+               label="theory eq. (33) at K (run's E, P)")
     right.set_xlabel("alpha")
     right.set_ylabel("100 (R / R_hat - 1)  [%]")
     right.set_title("relative to R_hat of the simulated network")

@@ -201,9 +201,9 @@ def summary(results):
              "stability_limit chart the methods themselves and are not counted). Kernel: the "
              "stored entries (rows on K_N's rank-one force) times replica lanes over every force "
              "evaluation made, the stepping loops' share of the wall time, and their rate, "
-             "to set beside the sparse kernel's measured floor (README, \"The kernel against "
-             "the yardstick and the measured bound\": ~1.4 G/s on one thread and ~2.7 G/s on "
-             "two at N = 10^4, degree 100); a driver on K_N counts rows, which cost a sin/cos "
+             "to set beside the sparse kernel's measured floor (docs/performance.md, \"The kernel "
+             "against the yardstick and the measured bound\": ~1.4 G/s on one thread and ~2.7 "
+             "G/s on two at N = 10^4, degree 100); a driver on K_N counts rows, which cost a sin/cos "
              "each, so its rate is not comparable with that floor. Ranks x threads: the most "
              "threads per rank any run of the driver used.", "",
              "| driver | checks | not reproduced | wall time [s] | force evaluations | speed-up "

@@ -1,4 +1,4 @@
-"""The near-onset gap (beyond the paper, issue #17 4e). Gaussian momenta, sigma0^2 = 0.12, from the
+"""The near-onset gap (beyond the paper). Gaussian momenta, sigma0^2 = 0.12, from the
 incoherent start at 1.1, 1.2 and 1.5 K_c. Top row: the complete graph K_N; bottom row: ER with
 degree 100. Columns 1-3: the replica mean R(t) for each N (log time) with eq:rSigmaBesselMain at
 the runs' own E and P (dashed, same colour) and the paper's averaging window [500, 1000] (grey).
@@ -46,7 +46,7 @@ def main():
         ax.set(xscale="log", xlabel="N", ylabel="R_th(E, P) - <R>",
                title=f"{label}: deficit below the theory")
         ax.legend(fontsize=6)
-    fig.suptitle("Near onset: does <R> reach eq:rSigmaBesselMain, and when?")
+    fig.suptitle("Near onset: does <R> reach the self-consistent theory, eq. (33), and when?")
     fig.tight_layout()
     hmfdata.save_figure(fig, args.out, "near_onset_gap", r.scale)
 

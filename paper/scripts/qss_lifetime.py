@@ -1,4 +1,4 @@
-"""QSS of the all-to-all HMF (beyond the paper, issue #17 4c): homogeneous water-bag at U = 0.69
+"""QSS of the all-to-all HMF (beyond the paper): homogeneous water-bag at U = 0.69
 on K_N. Left: the replica mean R(t) for each N, the half-way level between its start and the
 canonical M_eq (dotted) and the measured life (vertical). Right: the life against N with the
 fitted power law and the literature's N^1.7 (Yamaguchi et al. 2004) through the middle point.

@@ -1,4 +1,4 @@
-"""The water-bag QSS on networks (beyond the paper, issue #17 4d): the start of qss_lifetime
+"""The water-bag QSS on networks (beyond the paper): the start of qss_lifetime
 (sigma0^2 = 0.38, K lambda / N = 1) on random regular graphs (RR), ER and the complete graph K_N.
 Left: the life against N at d = 20 (RR, ER) and at d = N - 1 (K_N). Middle: the life against the
 mean degree at fixed N, K_N as d = N - 1, with K_N's fitted law at N = d + 1 (dotted). Right: the

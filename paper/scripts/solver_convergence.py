@@ -1,4 +1,4 @@
-"""Self-consistent solver near K_c (not a figure of the paper; issue "where each method fails"):
+"""Self-consistent solver near K_c (not a figure of the paper; where each method fails):
 map evaluations to the relative residual 1e-10 against K/K_c - 1, for the accelerated solver
 (solid) and the paper's plain fixed-point iteration (dashed; a missing point did not converge
 within 4x the predicted count), on ER, SF and two-block networks (near-degenerate, disconnected,

@@ -35,7 +35,7 @@ def main():
     hmfdata.style()
     fig, (a, b, c) = plt.subplots(1, 3, figsize=(11, 3.6))
     alpha = rows["alpha"]
-    for axis, quantity, label in ((a, "lambda", "lambda"), (b, "rho", "rho (eq:rhodef)")):
+    for axis, quantity, label in ((a, "lambda", "lambda"), (b, "rho", "rho (eq. (17))")):
         axis.errorbar(alpha, rows[quantity + " mean"], yerr=rows[quantity + " seed sd"], fmt="o",
                       capsize=3, label="ours (seed sd)")
         axis.plot(alpha, rows["paper " + quantity], "x", ms=8, label="paper")

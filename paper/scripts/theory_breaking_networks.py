@@ -1,5 +1,5 @@
 """Simulation against the self-consistent theory on networks that break its assumptions (not a
-figure of the paper; issue "where each method fails"): <R>_t (bars, with SEM) and
+figure of the paper; where each method fails): <R>_t (bars, with SEM) and
 eq:rSigmaBesselMain at each run's conserved energy and momentum (markers) at K/K_c = 1.5 and 3,
 for an ER control, two weakly linked communities, two disconnected communities and a star.
 From verification_theory_breaking_networks."""
@@ -33,7 +33,7 @@ def main():
     ax.set_xticks(np.arange(len(names)))
     ax.set_xticklabels([n.replace(" (", "\n(") for n in names], fontsize=7)
     ax.set_ylabel("$\\langle R\\rangle_t$")
-    ax.set_title("Simulation vs eq:rSigmaBesselMain where the theory's assumptions fail "
+    ax.set_title("Simulation vs the theory, eq. (33), where its assumptions fail "
                  "(labels: relative gap)", fontsize=8)
     ax.legend(fontsize=6, loc="lower right")
     fig.tight_layout()

@@ -1,4 +1,4 @@
-"""Water-bag momenta (beyond the paper, issue #17 4b). Left: the late R (mean over the last 30% of
+"""Water-bag momenta (beyond the paper). Left: the late R (mean over the last 30% of
 60 time units) on the smaller and the larger of two networks whose finite-size floors differ by 2
 (K_N at N and 4N; ER at mean degree d and 4d), below (0.8) and above (1.2) the water-bag's linear
 threshold K_c^wb = 6 sigma0^2 N / lambda, and Gaussian momenta at the same K (2.4 Gaussian K_c).
@@ -36,7 +36,7 @@ def main():
     axes[1].errorbar(gr["K/K_c^wb"], gr["slope"], yerr=gr["slope se"], fmt="o", capsize=3,
                      color="C3", label="fitted on K_N")
     axes[1].plot(gr["K/K_c^wb"], gr["gamma samples"], "x", color="C4",
-                 label="eq:lambdaHat, replicas' samples")
+                 label="eq. (12), replicas' samples")
     axes[1].set(xlabel="K / K_c^wb", ylabel="growth rate", title="growth rate (K_N)")
     axes[1].legend(fontsize=7)
     fig.suptitle("Water-bag momenta: linear threshold 6 sigma0^2 N / lambda and growth rate")

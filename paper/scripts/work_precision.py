@@ -1,4 +1,4 @@
-"""Work-precision charts (not a figure of the paper; issue "speed against accuracy"): for each
+"""Work-precision charts (not a figure of the paper; speed against accuracy): for each
 scene, cost per unit of simulated time (force evaluations; wall time in a second row) against the
 co-moving energy error and against the error of <R>_t with respect to a yoshida4 h = 0.005
 reference, for every integrator and step h. The dashed line is the statistical floor of <R>_t

@@ -2,10 +2,11 @@
 
 Top panel: <R>_t against K/K_c (the run's K_c: the linear threshold of its momenta), the mean
 over replicas with error bars of the combined batch-means SEM (the CLI's R_sem) and, with more
-than one replica, the replicas' spread as a second, wider cap; beside it eq:rSigmaBesselMain at
-the run's sigma0 and G sqrt(dK/K_c) (eq:globalOrderRInDeltaK), from `hmfnet.theory` on the
-run's network. Bottom panel: the largest relative energy error of each K (over replicas), on a
-log scale, with the run's --energy-tolerance.
+than one replica, the replicas' spread as a second, wider cap; beside it the self-consistent
+theory R(K) at the run's sigma0 (the paper's eq. (33), eq:rSigmaBesselMain in docs/equations.md)
+and the near-onset law G sqrt(K/K_c - 1) (eq. (38), eq:globalOrderRInDeltaK), from
+`hmfnet.theory` on the run's network. Bottom panel: the largest relative energy error of each K
+(over replicas), on a log scale, with the run's --energy-tolerance.
 
 The network is the one the run recorded as its input (a file path), or ``--network FILE``; a run
 whose network cannot be found (a Python network, a moved file) is drawn without the theory, and
@@ -87,9 +88,9 @@ def plot_run(path, output, network=None):
                                       gridspec_kw={"height_ratios": [3, 1.3]})
     if "theory_R" in d:
         top.plot(d["theory_K_over_Kc"], d["theory_R"], "k-", lw=1.2,
-                 label="eq:rSigmaBesselMain (sigma0)")
+                 label="self-consistent theory, paper eq. (33)")
         top.plot(d["theory_K_over_Kc"], d["theory_R_onset"], "r--", lw=1.0,
-                 label="G sqrt(dK/K_c)")
+                 label="near onset: G sqrt(K/K_c - 1), eq. (38)")
     if np.any(d["R_spread"] > 0):
         top.errorbar(d["K_over_Kc"], d["R"], yerr=d["R_spread"], fmt="none", color="tab:blue",
                      capsize=6, lw=0.8, label="replica sd")

@@ -4,7 +4,7 @@
 // more at those barriers than it computes, and far more when OMP_WAIT_POLICY=PASSIVE puts waiting
 // threads to sleep (a futex wake at every barrier). So the default gives each thread at least
 // work_per_thread(policy) of a step's work: gathers plus each row's own work, times the replicas
-// (step_work; measured: bench/thread_rule.sh, README "Threads").
+// (step_work; measured: bench/thread_rule.sh, docs/performance.md "Threads").
 #include <cstdint>
 
 namespace hmfnet {
@@ -15,8 +15,8 @@ enum class WaitPolicy { spinning, passive };
 /// The policy of this process: PASSIVE when OMP_WAIT_POLICY says so (any case), else spinning.
 WaitPolicy wait_policy_from_environment();
 
-/// Work (step_work) per thread of a step. Measured on the 2-core development machine, session 19
-/// (one idle run, `bash bench/thread_rule.sh`: ER and the complete graph, 2 threads against 1;
+/// Work (step_work) per thread of a step. Measured on the 2-core development machine (AMD EPYC;
+/// one idle run, `bash bench/thread_rule.sh`: ER and the complete graph, 2 threads against 1;
 /// work in parentheses):
 ///  - spinning (unset, ACTIVE): 0.3x at ER N = 100, d = 5 (4.5 10^3), 0.6x at N = 300, d = 10
 ///    (1.5 10^4), 1.0x at N = 1000, d = 10 (5 10^4) and on K_N N = 1000 (4 10^4), 0.9x on K_N
@@ -36,14 +36,14 @@ inline constexpr std::int64_t k_work_per_thread_passive = 600'000;
 /// rule counted stored entries only, which undercounted a step of a sparse network of low degree
 /// and of the complete graph (no stored entries: its rows were counted as entries); and since the
 /// vectorised sin/cos a step of the same work takes less time, so the thresholds above grew.
-/// Measured with one thread (bench/thread_rule.sh, session 19): ER N = 10^4 takes 239 us a step at
+/// Measured with one thread (bench/thread_rule.sh, AMD EPYC): ER N = 10^4 takes 239 us a step at
 /// d = 10 and 654 us at d = 100, so a gather costs 0.46 ns and a row 19 ns besides its gathers,
 /// ~41 gathers; ER N = 10^5, d = 20 says 19 ns too; the complete graph took 18 ns a row with one
 /// replica (N = 2 10^4 and 10^5) and 10.7 ns a row and replica with 16 (N = 1600). Since the
-/// rank-one force's fused passes (session 20, another machine) those are ~9 and ~8 ns, so the
+/// rank-one force's fused passes (measured on an Intel Xeon) those are ~9 and ~8 ns, so the
 /// rule counts a rank-one row as about twice its cost; bench/thread_rule.sh's complete-graph rows,
 /// re-run then, kept the default within 1.2x of the best count except in two rows where default
-/// and --threads 1 ran the same single thread (noise; README "Threads").
+/// and --threads 1 ran the same single thread (noise; docs/performance.md "Threads").
 inline constexpr std::int64_t k_row_work = 40;
 
 /// The rule's work of one step on this rank: (gathers + k_row_work x rows) x replica lanes.

@@ -1,5 +1,5 @@
 #pragma once
-// Orders of the nodes that make the force kernel's gathers local (issue #16 item 4): the kernel
+// Orders of the nodes that make the force kernel's gathers local (docs/performance.md): the kernel
 // reads [cos, sin] of each stored entry's column, so rows whose columns sit close together reuse
 // cache lines. Reverse Cuthill-McKee (Cuthill & McKee 1969, reversed as George 1971) narrows the
 // band of a matrix with locality (lattices, geometric and spatial networks); by degree puts the

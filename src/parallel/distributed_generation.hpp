@@ -1,5 +1,5 @@
 #pragma once
-// Generating a random network by rows over the ranks (issue #15 item 2): no rank ever holds
+// Generating a random network by rows over the ranks (docs/scaling.md): no rank ever holds
 // more than its own rows. The units of an EdgeSource (network/edge_source.hpp) are split by
 // expected work; every rank emits its units twice: once to count the degrees (an N-vector
 // summed over the ranks, from which the rows are cut by stored entries exactly as a reader cuts

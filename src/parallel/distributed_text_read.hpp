@@ -1,5 +1,5 @@
 #pragma once
-// Reading a Matrix Market or edge-list file in parallel (issue #15 item 1): no rank holds the
+// Reading a Matrix Market or edge-list file in parallel (docs/scaling.md): no rank holds the
 // whole file or the whole matrix. Every rank parses the header itself (a prefix of the file),
 // then the entry lines of its own byte range (the body cut into equal byte ranges, each moved
 // to the next line start; line numbers from a sum of the ranges' line counts, so errors still

@@ -1,5 +1,5 @@
 #pragma once
-// Graph partitioning through Zoltan2 (issue #15 item 4): for a network with structure (blocks,
+// Graph partitioning through Zoltan2 (docs/scaling.md): for a network with structure (blocks,
 // communities, geometry) whose node labels do not follow it, parts that cut few edges make the
 // ghost set of each rank small, so each step imports fewer values. Zoltan2 runs Zoltan's
 // parallel hypergraph partitioner PHG (algorithm "phg"; the graph's rows as hyperedges, so the

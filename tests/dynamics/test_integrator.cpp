@@ -72,7 +72,7 @@ TEST_CASE("Leap-frog conserves total momentum to round-off [ER N=600 K=3Kc]", "[
     worst = std::max(worst, std::abs(total(s.p) - p0) / scale);
   }
   INFO("max |P(t) - P(0)| / sum |p| = " << worst);
-  REQUIRE(worst <= 1e-10);  // issue #3: round-off; antisymmetric forces sum to zero exactly
+  REQUIRE(worst <= 1e-10);  // round-off; antisymmetric forces sum to zero exactly
 }
 
 TEST_CASE("Leap-frog energy error is second order [ER N=600]", "[integrator]") {

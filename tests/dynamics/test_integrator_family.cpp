@@ -1,4 +1,4 @@
-// The integrator family behind one interface (issue #6): measured convergence orders by halving
+// The integrator family behind one interface: measured convergence orders by halving
 // the step (MFEM's ODE tests: order = log2(e_h / e_{h/2}) >= p - 0.1), Yoshida's energy order,
 // RK4's secular energy drift against leap-frog's bounded error, reversibility, momentum
 // conservation, the evaluation count each integrator reports and thread determinism.

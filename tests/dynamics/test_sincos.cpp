@@ -173,7 +173,7 @@ TEST_CASE("sincos: an angle's bits do not depend on its place, the threads or th
 }
 
 TEST_CASE("sincos: pinned bits", "[sincos]") {
-  // Printed once from this implementation (session 17) and checked against cosl/sinl below: the
+  // Printed once from this implementation (commit 67bf11b) and checked against cosl/sinl below: the
   // bits any build of it must give on any x86-64 CPU (no contraction, no reassociation, the same
   // four-part reduction). A compiler or flag that changes the arithmetic shows here; a deliberate
   // change of the algorithm re-pins them.

@@ -1,4 +1,4 @@
-// Matrix Market and edge lists parsed by byte ranges over the ranks (issue #15 item 1): every
+// Matrix Market and edge lists parsed by byte ranges over the ranks (docs/scaling.md): every
 // rank's rows equal the serial reader's, with the same warnings, on every rank count; a malformed
 // line in the last rank's range, a duplicate or an unmatched entry across ranks, a count that
 // does not match the size line end every rank with the serial reader's own FILE:LINE message.

@@ -1,4 +1,5 @@
-// The relaxation-time rule of the issue #17 drivers (verification/support/passage_time.hpp).
+// The relaxation-time rule of qss_lifetime and near_onset_gap
+// (verification/support/passage_time.hpp).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <vector>

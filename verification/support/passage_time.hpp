@@ -1,5 +1,5 @@
 #pragma once
-// How long a slow relaxation of R(t) takes, as the drivers of issue #17 measure it
+// How long a slow relaxation of R(t) takes, as the drivers beyond the paper measure it
 // (qss_lifetime.cpp, near_onset_gap.cpp): the replica mean of R(t), smoothed by a running mean,
 // first passes half way from its initial level to a target level. The error comes from
 // bootstrap resamples of the replicas (the rule applied to each), and a power law in N from a

@@ -2,7 +2,7 @@
 // What a driver's simulations cost, summed over its runs (support/work_account.hpp makes one
 // from a run; ClaimCheck::account adds them up and writes them beside the driver's results).
 // Kernel work over kernel seconds is the rate the REPORT's summary table compares with the
-// measured bound of the force kernel (README: "The kernel against the yardstick").
+// measured bound of the force kernel (docs/performance.md: "The kernel against the yardstick").
 #include <algorithm>
 
 namespace hmfnet::verification {
