@@ -1,0 +1,180 @@
+#!/usr/bin/env bash
+# The device check, run on a machine with an NVIDIA GPU, nvcc, CMake and g++ (Trilinos, HDF5 and
+# MPI are not needed): names the GPU, builds ci/device's standalone project (the CUDA backend and
+# the gpu tests) and runs each check, writing logs under $OUT and printing a table last. Exits
+# non-zero when the build or a check fails; a check that finds no device reports skip.
+#
+#   bash ci/device_prepare.sh   first, on a machine with nvcc and Catch2: fills build-device/ and
+#                               prints the device call, which carries build-device
+#   bash ci/device_check.sh     then, from the repository root on the GPU machine
+#
+# Environment: OUT (logs; ./device-out when unset), HMFNET_DEVICE_BUILD (scratch build folder,
+# /tmp/hmfnet-device-build), HMFNET_DEVICE_BUDGET_S (seconds for the whole check, 450: each step's
+# time limit is cut to what is left of it, so the table is printed inside an 8-minute call).
+#
+# A new check is one function that runs something from "$build" and calls `record` once per
+# result, added to the list `checks` below. $OUT brings back at most 8 files, two folders deep:
+# each check writes one log.
+set -euo pipefail
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$root"
+OUT="${OUT:-$root/device-out}"
+build="${HMFNET_DEVICE_BUILD:-/tmp/hmfnet-device-build}"
+budget_s="${HMFNET_DEVICE_BUDGET_S:-450}"
+prepared="$root/build-device"
+mkdir -p "$OUT" || { echo "device_check: cannot create OUT=$OUT" >&2; exit 1; }
+OUT="$(cd "$OUT" && pwd)"
+t_start=$EPOCHREALTIME
+
+rows=()
+failed=0
+device_name="none"
+
+# record NAME RESULT SECONDS [NOTE]: one row of the table; RESULT is pass, fail or skip.
+record() {
+  rows+=("$(printf '%-34s %-5s %8s  %s' "$1" "$2" "$3" "${4:-}")")
+  [ "$2" = fail ] && failed=1
+  return 0
+}
+# exit_text RC: "exit RC", naming the time limit where timeout ended the command.
+exit_text() { case $1 in 124|137) echo "exit $1 (time limit)" ;; *) echo "exit $1" ;; esac; }
+elapsed_since() { awk -v a="$1" -v b="$EPOCHREALTIME" 'BEGIN { printf "%.1f", b - a }'; }
+# Seconds a step may take: its own limit, cut to what the budget leaves after 20 s for the table.
+limit_for() {
+  local left
+  left=$(awk -v a="$t_start" -v b="$EPOCHREALTIME" -v n="$budget_s" 'BEGIN { printf "%d", n - (b - a) - 20 }')
+  if [ "$left" -lt "$1" ]; then echo "$left"; else echo "$1"; fi
+}
+# bounded LIMIT LOG COMMAND...: runs COMMAND under its time limit, appending its output to LOG.
+bounded() {
+  local limit=$1 log=$2
+  shift 2
+  [ "$limit" -gt 0 ] || { echo "device_check: no time left in the budget for: $*" >>"$log"; return 124; }
+  timeout --kill-after=10 "$limit" "$@" >>"$log" 2>&1
+}
+
+show_device() {
+  local log="$OUT/device.txt"
+  : >"$log"
+  if command -v nvidia-smi >/dev/null; then
+    nvidia-smi -L | tee -a "$log" || true
+    nvidia-smi --query-gpu=name,driver_version,memory.total,memory.used,compute_cap \
+      --format=csv | tee -a "$log" || true
+    device_name=$(nvidia-smi --query-gpu=name,driver_version,memory.total \
+      --format=csv,noheader 2>/dev/null | head -n 1 || true)
+    [ -n "$device_name" ] || device_name="unreadable (nvidia-smi failed)"
+  else
+    echo "nvidia-smi: not found (no NVIDIA driver on this machine)" | tee -a "$log"
+    device_name="none (no nvidia-smi)"
+  fi
+  { echo; uname -srm; nvcc --version | tail -n 2; cmake --version | head -n 1
+    "${CXX:-g++}" --version | head -n 1; } >>"$log" 2>&1 || true
+}
+
+# nvcc is put on the PATH where the toolkit sits in its usual place but the PATH lacks it.
+find_tools() {
+  if ! command -v nvcc >/dev/null && [ -x /usr/local/cuda/bin/nvcc ]; then
+    export PATH="/usr/local/cuda/bin:$PATH"
+  fi
+  command -v nvcc >/dev/null || { echo "device_check: nvcc not found on the PATH" >&2; return 1; }
+  command -v cmake >/dev/null || { echo "device_check: cmake not found on the PATH" >&2; return 1; }
+  ctest_bin="$(dirname "$(command -v cmake)")/ctest"
+  [ -x "$ctest_bin" ] || ctest_bin=$(command -v ctest) \
+    || { echo "device_check: ctest not found beside cmake or on the PATH" >&2; return 1; }
+  generator="Unix Makefiles"
+  command -v ninja >/dev/null && generator="Ninja"
+  return 0
+}
+
+# Configures and builds ci/device into $build; a build folder left by another source tree is
+# started afresh.
+build_standalone() {
+  local log="$OUT/build.log" t0=$EPOCHREALTIME
+  : >"$log"
+  if [ -f "$build/CMakeCache.txt" ] &&
+     ! grep -qx "CMAKE_HOME_DIRECTORY:INTERNAL=$root/ci/device" "$build/CMakeCache.txt"; then
+    rm -rf "$build"
+  fi
+  if ! bounded "$(limit_for 90)" "$log" cmake -S ci/device -B "$build" -G "$generator" \
+         -DCMAKE_CUDA_COMPILER="$(command -v nvcc)" \
+         -DHMFNET_CATCH2_INCLUDE_DIR="$prepared/include"; then
+    record "configure ($generator)" fail "$(elapsed_since "$t0")" "see build.log"
+    return 1
+  fi
+  if ! bounded "$(limit_for 300)" "$log" cmake --build "$build" --parallel "$(nproc)"; then
+    record "build ($generator)" fail "$(elapsed_since "$t0")" "see build.log"
+    return 1
+  fi
+  # Which machine code and PTX the test program carries (sm_90 for the H100 and H200).
+  if command -v cuobjdump >/dev/null; then
+    cuobjdump --list-elf --list-ptx "$build/bin/hmfnet_gpu_tests" >>"$log" 2>&1 || true
+  fi
+  record "build ($generator)" pass "$(elapsed_since "$t0")" \
+    "$(grep -m1 -o 'architectures .*' "$log" || true)"
+}
+
+# shellcheck disable=SC2317  # called through the list checks
+# The CTest label gpu, one row per test, as CTest reports it (its skip code 77: no usable device).
+check_gpu_label() {
+  local log="$OUT/ctest-gpu.log" rc=0 t0=$EPOCHREALTIME line name time why n=0 n_failed=0
+  : >"$log"
+  (cd "$build" && bounded "$(limit_for 180)" "$log" "$ctest_bin" -L '^gpu$' -V) || rc=$?
+  why=$(grep -m1 -o 'skipped: .*' "$log" | cut -c10- || true)
+  while IFS= read -r line; do
+    n=$((n + 1))
+    name=$(awk '{ print $4 }' <<<"$line")
+    time=$(grep -o '[0-9.]* sec$' <<<"$line" | cut -d' ' -f1)
+    case "$line" in
+      *Passed*) record "$name" pass "$time" ;;
+      *Skipped*) record "$name" skip "$time" "$why" ;;
+      *) n_failed=$((n_failed + 1))
+         record "$name" fail "$time" "$(sed -E 's/.*\*\*\*([A-Za-z :]+[A-Za-z]).*/\1/' <<<"$line"), see ctest-gpu.log" ;;
+    esac
+  done < <(grep -E '^ *[0-9]+/[0-9]+ Test +#[0-9]+: ' "$log" || true)
+  if [ "$n" -eq 0 ]; then
+    record "ctest -L gpu" fail "$(elapsed_since "$t0")" "no test result, ctest $(exit_text "$rc")"
+  elif [ "$rc" -ne 0 ] && [ "$n_failed" -eq 0 ]; then
+    record "ctest -L gpu" fail "$(elapsed_since "$t0")" "ctest $(exit_text "$rc")"
+  fi
+}
+
+# Where the build here failed: the test program that ci/device_prepare.sh built on the CPU
+# machine, run directly (exit 0 pass, 77 skip). The build's own failure still fails the check.
+check_prebuilt_gpu_tests() {
+  local exe="$prepared/bin/hmfnet_gpu_tests" log="$OUT/ctest-gpu.log" rc=0 t0=$EPOCHREALTIME
+  [ -x "$exe" ] || { record "gpu tests (prebuilt)" skip 0 "none in build-device/bin"; return 0; }
+  bounded "$(limit_for 180)" "$log" "$exe" || rc=$?
+  case $rc in
+    0) record "gpu tests (prebuilt)" pass "$(elapsed_since "$t0")" "$(head -n 1 "$prepared/PREPARED" 2>/dev/null)" ;;
+    77) record "gpu tests (prebuilt)" skip "$(elapsed_since "$t0")" "$(grep -m1 -o 'skipped: .*' "$log" | cut -c10-)" ;;
+    *) record "gpu tests (prebuilt)" fail "$(elapsed_since "$t0")" "$(exit_text "$rc"), see ctest-gpu.log" ;;
+  esac
+}
+
+checks=(check_gpu_label)
+
+echo "== device"
+show_device
+echo "== build ($build)"
+if find_tools && build_standalone; then
+  for c in "${checks[@]}"; do
+    echo "== $c"
+    "$c" || record "$c" fail - "the check stopped with exit $?"
+  done
+else
+  [ "${#rows[@]}" -gt 0 ] || record "tools (nvcc, cmake, ctest)" fail 0 "see the line above"
+  echo "== build failed: see $OUT/build.log"
+  tail -n 30 "$OUT/build.log" 2>/dev/null || true
+  check_prebuilt_gpu_tests
+fi
+
+{
+  echo
+  echo "== device check on: $device_name"
+  printf '%-34s %-5s %8s  %s\n' check result "wall s" note
+  printf '%s\n' "${rows[@]}"
+  printf '%-34s %-5s %8s\n' total "" "$(elapsed_since "$t_start")"
+  echo "logs: $OUT"
+} | tee "$OUT/summary.txt"
+exit "$failed"
