@@ -23,6 +23,7 @@
 #include "parallel/distributed_network.hpp"
 #include "parallel/parallel_session.hpp"
 #include "support/simulation_runs.hpp"
+#include "support/small_networks.hpp"
 
 using namespace hmfnet;
 using hmfnet::test::short_run;
@@ -139,13 +140,7 @@ namespace {
 
 using Edges = std::vector<std::pair<NodeIndex, NodeIndex>>;
 
-Edges upper_edges(const Network& net) {
-  Edges e;
-  for (NodeIndex i = 0; i < net.size(); ++i)
-    for (EdgeOffset k = net.row_begin(i); k < net.row_end(i); ++k)
-      if (net.col(k) > i) e.emplace_back(i, net.col(k));
-  return e;
-}
+using test::upper_edges;
 
 // Edge `which` moved to the first free partner of its first end: N and nnz stay the same.
 Network moved_edge(const Network& net, std::size_t which) {

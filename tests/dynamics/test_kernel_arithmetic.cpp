@@ -24,6 +24,8 @@
 #include "dynamics/sincos.hpp"
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
+#include "support/sincos_hard_cases.hpp"
+#include "support/small_networks.hpp"
 
 using namespace hmfnet;
 
@@ -91,16 +93,7 @@ TEST_CASE("scalar sincos equals the vectorised one at the doubles nearest k pi/2
   // The hard cases of tests/dynamics/test_sincos.cpp: every k up to 2000, then k growing by 1%
   // to 6.3 10^6 (|x| ~ 10^7), each with both neighbours and both signs, and the angles that were
   // 20-3900 ulp off before the reduction carried its rounding.
-  const long double half_pi = 1.5707963267948966192313216916397514L;
-  std::vector<double> x = {45.553093477052, 5830.795965062656, 8166.5701030066675,
-                           9436423.844736237};
-  for (double k = 1.0; k < 6.3e6; k = k < 2000.0 ? k + 1.0 : std::ceil(k * 1.01)) {
-    const auto nearest = static_cast<double>(static_cast<long double>(k) * half_pi);
-    for (const double v : {nearest, std::nextafter(nearest, 0.0), std::nextafter(nearest, 1e9)}) {
-      x.push_back(v);
-      x.push_back(-v);
-    }
-  }
+  std::vector<double> x = test::sincos_hard_angles();
   require_same_sincos(x);
 }
 
@@ -139,23 +132,11 @@ TEST_CASE("scalar sincos equals the vectorised one beyond the reduced range and 
 
 namespace {
 
-// The network of the step test, with symmetric weights in [1, 2] when asked (a function of the
-// unordered pair), so that both the 0/1 and the weighted row sums are exercised.
+// The network of the step test, 0/1 or with the weights of test::pair_weighted, so that both
+// row sums are exercised.
 Network step_network(bool weighted) {
   const Network net = erdos_renyi({300, 0.05, 29});
-  if (!weighted) return net;
-  std::vector<EdgeOffset> row_ptr{0};
-  std::vector<NodeIndex> cols;
-  std::vector<double> w;
-  for (NodeIndex i = 0; i < net.size(); ++i) {
-    for (EdgeOffset k = net.row_begin(i); k < net.row_end(i); ++k) {
-      const NodeIndex j = net.col(k), a = std::min(i, j), b = std::max(i, j);
-      cols.push_back(j);
-      w.push_back(1.0 + static_cast<double>((7 * a + 13 * b) % 11) / 10.0);
-    }
-    row_ptr.push_back(static_cast<EdgeOffset>(cols.size()));
-  }
-  return Network::from_csr(net.size(), std::move(row_ptr), std::move(cols), std::move(w));
+  return weighted ? test::pair_weighted(net) : net;
 }
 
 // NetworkForce::evaluate composed from the per-element functions, as a device backend composes

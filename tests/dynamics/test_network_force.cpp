@@ -11,29 +11,13 @@
 #include "dynamics/team.hpp"
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
+#include "support/small_networks.hpp"
 
 using namespace hmfnet;
 
 namespace {
 
 constexpr double k_unit_roundoff_f32 = 0x1p-24;
-
-// The ER network with symmetric weights in [1, 2] (a function of the unordered pair), so the
-// weighted kernel path and its float32 weights are exercised.
-Network weighted(const Network& net) {
-  std::vector<EdgeOffset> row_ptr{0};
-  std::vector<NodeIndex> cols;
-  std::vector<double> w;
-  for (NodeIndex i = 0; i < net.size(); ++i) {
-    for (EdgeOffset k = net.row_begin(i); k < net.row_end(i); ++k) {
-      const NodeIndex j = net.col(k), a = std::min(i, j), b = std::max(i, j);
-      cols.push_back(j);
-      w.push_back(1.0 + static_cast<double>((7 * a + 13 * b) % 11) / 10.0);
-    }
-    row_ptr.push_back(static_cast<EdgeOffset>(cols.size()));
-  }
-  return Network::from_csr(net.size(), std::move(row_ptr), std::move(cols), std::move(w));
-}
 
 struct Evaluation {
   std::vector<double> g;
@@ -61,7 +45,7 @@ TEST_CASE("float32 force within its rounding bound of float64 and not equal to i
           "[network_force]") {
   const Network base = erdos_renyi({800, 0.05, 11});
   for (const bool is_weighted : {false, true}) {
-    const Network net = is_weighted ? weighted(base) : base;
+    const Network net = is_weighted ? test::pair_weighted(base) : base;
     const DistributedNetwork d(net);
     for (const int B : {1, 3, 4}) {
       const RotorState s = state(d, B);
@@ -92,7 +76,7 @@ TEST_CASE("float32 force within its rounding bound of float64 and not equal to i
 }
 
 TEST_CASE("float32 force is bit-identical for 1 and 2 threads and per replica", "[network_force]") {
-  const Network net = weighted(erdos_renyi({700, 0.04, 5}));
+  const Network net = test::pair_weighted(erdos_renyi({700, 0.04, 5}));
   const DistributedNetwork d(net);
   const RotorState s4 = state(d, 4);
   const int threads = omp_get_max_threads();
@@ -122,7 +106,7 @@ TEST_CASE("Every replica kernel equals one-replica passes bit for bit [B = 2, 3,
   // four in float32, B = 8 one and two, B = 3 the run-time width), on 0/1 and weighted rows whose
   // degrees are not all multiples of 4 (the tail goes to partial 0).
   const Network plain = erdos_renyi({500, 0.05, 9});
-  const Network heavy = weighted(plain);
+  const Network heavy = test::pair_weighted(plain);
   for (const Network* net : {&plain, &heavy}) {
     const DistributedNetwork d(*net);
     for (const ForcePrecision precision : {ForcePrecision::float64, ForcePrecision::float32}) {

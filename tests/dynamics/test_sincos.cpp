@@ -17,6 +17,7 @@
 #include "dynamics/sincos.hpp"
 #include "dynamics/team.hpp"
 #include "dynamics/thread_choice.hpp"
+#include "support/sincos_hard_cases.hpp"
 
 using namespace hmfnet;
 
@@ -75,19 +76,8 @@ TEST_CASE("sincos: error against long double within 1 ulp up to 10^7", "[sincos]
 }
 
 TEST_CASE("sincos: within 1 ulp at the doubles nearest multiples of pi/2", "[sincos]") {
-  // There one of cos and sin is tiny, so the whole reduction error shows in its relative error.
-  // Every k up to 2000, then k growing by 1% up to 6.3 10^6 (|x| ~ 10^7), with both neighbours,
-  // and the angles a review found 20-3900 ulp off before the reduction carried eb.
-  const long double half_pi = 1.5707963267948966192313216916397514L;
-  std::vector<double> x = {45.553093477052, 5830.795965062656, 8166.5701030066675,
-                           9436423.844736237};
-  for (double k = 1.0; k < 6.3e6; k = k < 2000.0 ? k + 1.0 : std::ceil(k * 1.01)) {
-    const auto nearest = static_cast<double>(static_cast<long double>(k) * half_pi);
-    for (const double v : {nearest, std::nextafter(nearest, 0.0), std::nextafter(nearest, 1e9)}) {
-      x.push_back(v);
-      x.push_back(-v);
-    }
-  }
+  // tests/support/sincos_hard_cases.hpp: the doubles nearest k pi/2 up to |x| ~ 10^7.
+  const std::vector<double> x = test::sincos_hard_angles();
   const ErrorInUlps e = largest_error(x);
   INFO(x.size() << " angles: cos " << e.cos << " ulp, sin " << e.sin << " ulp");
   CHECK(e.cos <= 1.0);

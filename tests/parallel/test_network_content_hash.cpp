@@ -20,13 +20,7 @@ namespace {
 
 using Edges = std::vector<std::pair<NodeIndex, NodeIndex>>;
 
-Edges upper_edges(const Network& net) {
-  Edges e;
-  for (NodeIndex i = 0; i < net.size(); ++i)
-    for (EdgeOffset k = net.row_begin(i); k < net.row_end(i); ++k)
-      if (net.col(k) > i) e.emplace_back(i, net.col(k));
-  return e;
-}
+using test::upper_edges;
 
 bool has_edge(const Edges& e, NodeIndex a, NodeIndex b) {
   for (const auto& [i, j] : e)

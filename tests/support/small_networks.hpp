@@ -72,4 +72,30 @@ inline Network two_cliques(NodeIndex a, NodeIndex b) {
   return Network::from_undirected_edges(a + b, e);
 }
 
+/// The links i < j of a network, in row order: the input of from_undirected_edges.
+inline std::vector<std::pair<NodeIndex, NodeIndex>> upper_edges(const Network& net) {
+  std::vector<std::pair<NodeIndex, NodeIndex>> e;
+  for (NodeIndex i = 0; i < net.size(); ++i)
+    for (EdgeOffset k = net.row_begin(i); k < net.row_end(i); ++k)
+      if (net.col(k) > i) e.emplace_back(i, net.col(k));
+  return e;
+}
+
+/// The same links with symmetric weights in [1, 2] (a function of the unordered pair), so that
+/// a weighted kernel path (and its float32 weights) is exercised on a given pattern.
+inline Network pair_weighted(const Network& net) {
+  std::vector<EdgeOffset> row_ptr{0};
+  std::vector<NodeIndex> cols;
+  std::vector<double> w;
+  for (NodeIndex i = 0; i < net.size(); ++i) {
+    for (EdgeOffset k = net.row_begin(i); k < net.row_end(i); ++k) {
+      const NodeIndex j = net.col(k), a = std::min(i, j), b = std::max(i, j);
+      cols.push_back(j);
+      w.push_back(1.0 + static_cast<double>((7 * a + 13 * b) % 11) / 10.0);
+    }
+    row_ptr.push_back(static_cast<EdgeOffset>(cols.size()));
+  }
+  return Network::from_csr(net.size(), std::move(row_ptr), std::move(cols), std::move(w));
+}
+
 }  // namespace hmfnet::test
