@@ -47,8 +47,8 @@ bool is_temporary_of(const FileIdentity& written, const FileIdentity& other) {
 }
 
 [[noreturn]] void refuse(const FileRole& written, const FileRole& other, bool other_is_read) {
-  const std::string other_name = (other.role == "input" ? "the input file" : other.role) + " " +
-                                 other.path;
+  const std::string other_name =
+      (other.role == "input" ? "the input file" : other.role) + " " + other.path;
   throw InputError(written.path, 0,
                    written.role + " names the same file as " + other_name + ": " +
                        (other_is_read ? "writing it would destroy what the command reads"

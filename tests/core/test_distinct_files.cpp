@@ -26,11 +26,10 @@ TEST_CASE("A written path that is the input by any name is refused [spelling, li
   const std::string dotted = (fs::path(dir.path()) / "." / "net.mtx").string();
   for (const std::string& written : {input, dotted, dir.file("link.mtx"), dir.file("hard.mtx")}) {
     INFO("written " << written);
-    require_input_error(
-        input_error_from([&] {
-          require_distinct_files({{"input", input}}, {{"--output", written}});
-        }),
-        written, 0, "--output names the same file as the input file " + input);
+    require_input_error(input_error_from([&] {
+                          require_distinct_files({{"input", input}}, {{"--output", written}});
+                        }),
+                        written, 0, "--output names the same file as the input file " + input);
   }
 }
 
@@ -55,10 +54,9 @@ TEST_CASE("Distinct files, empty paths and labels that name no file pass", "[dis
   TempDirectory dir;
   const std::string input = dir.file("net.mtx");
   write_text(input, "content\n");
-  REQUIRE_NOTHROW(require_distinct_files({{"input", input}},
-                                         {{"--output", dir.file("out.h5")},
-                                          {"--checkpoint", dir.file("ckpt.h5")},
-                                          {"--checkpoint", ""}}));
-  REQUIRE_NOTHROW(require_distinct_files({{"input", "networkx graph"}},
-                                         {{"--output", "networkx graph"}}));
+  REQUIRE_NOTHROW(require_distinct_files({{"input", input}}, {{"--output", dir.file("out.h5")},
+                                                              {"--checkpoint", dir.file("ckpt.h5")},
+                                                              {"--checkpoint", ""}}));
+  REQUIRE_NOTHROW(
+      require_distinct_files({{"input", "networkx graph"}}, {{"--output", "networkx graph"}}));
 }
