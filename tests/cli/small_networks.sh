@@ -3,7 +3,9 @@
 # complete graphs K_2..K_4 stored implicitly, and Zachary's karate club. Every command that reads a
 # network either works or refuses in one line (never a library's raw exception):
 #  - spectrum's lambda and lambda_2 equal the dense eigenvalues that numpy computes from the same
-#    file, to 1e-12 relative (spectral/perron.hpp solves networks this small densely);
+#    file, to 1e-12 relative (spectral/perron.hpp solves networks this small densely; both
+#    symmetric QR solvers are backward stable, so they differ by a few N eps lambda, below 1e-13
+#    for N <= 34);
 #  - theory and simulate answer (simulate's energy error below its tolerance);
 #  - convert writes an HDF5 file whose spectrum is the same;
 #  - rewire (one rank) either writes a network or refuses in one line.

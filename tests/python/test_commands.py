@@ -174,6 +174,8 @@ def test_options_that_expand_too_far_are_refused_at_once_in_short_numbers(karate
 def test_networks_of_two_to_four_nodes_work_in_every_command(graph):
     net = hmfnet.Network.from_networkx(graph)
     lam = float(np.linalg.eigvalsh(nx.to_numpy_array(graph))[-1])
+    # Both are dense symmetric eigensolvers (N <= 64 is solved densely: spectral/perron.hpp):
+    # backward stable, they differ by a few N eps lambda, far below 1e-12.
     assert hmfnet.spectrum(net)["lambda"] == pytest.approx(lam, rel=1e-12)
     assert hmfnet.theory(net, sigma0=0.35, K_over_Kc=[2.0])["points"][0]["status"] == "converged"
     run = hmfnet.simulate(net, seed=1, K_over_Kc=[2.0], T=10, transient=1)
