@@ -138,7 +138,22 @@ class Fnv1a {
   std::uint64_t m_hash = 0xcbf29ce484222325ULL;
 };
 
-std::string checksum(const Checkpoint& c) {
+// Adds every result field to the hash: scalars as their bytes, strings and vectors with their
+// length first (Fnv1a::add).
+struct ChecksumFields {
+  Fnv1a& hash;
+  void scalar(const char*, double x) { hash.add_scalar(x); }
+  void text(const char*, const std::string& s) { hash.add(s); }
+  void per_replica(const char*, const std::vector<double>& v) { hash.add(v); }
+  void per_node_replica(const char*, const std::vector<double>& v) { hash.add(v); }
+  void node_vector(const char*, const std::vector<double>& v) { hash.add(v); }
+  void per_record(const char*, const std::vector<double>& v) { hash.add(v); }
+  void per_record_replica(const char*, const std::vector<double>& v) { hash.add(v); }
+};
+
+}  // namespace
+
+std::string checkpoint_checksum(const Checkpoint& c) {
   Fnv1a h;
   h.add(c.fingerprint);
   h.add_scalar(static_cast<std::int64_t>(c.replicas));
@@ -155,23 +170,14 @@ std::string checksum(const Checkpoint& c) {
     h.add_scalar(static_cast<std::uint64_t>(a.columns));
     h.add(a.values);
   }
-  for (const PointResult& pt : c.points) {
-    h.add_scalar(pt.K);
-    h.add_scalar(pt.h);
-    h.add(pt.integrator);
-    for (const auto* v :
-         {&pt.R_mean, &pt.R_sem, &pt.energy_rel_error_max, &pt.momentum_drift, &pt.R_node,
-          &pt.omega_node, &pt.r_node, &pt.fluctuation, &pt.synchronised, &pt.phase_histogram,
-          &pt.rotor_theta_bar, &pt.rotor_p_bar, &pt.psi_frequency, &pt.frame}) {
-      h.add(*v);
-    }
-  }
-  for (const auto* v :
-       {&c.series.t, &c.series.K, &c.series.R, &c.series.energy, &c.series.momentum}) {
-    h.add(*v);
-  }
+  // The results so far, field by field in their lists' order (point_result.hpp).
+  ChecksumFields fields{h};
+  for (const PointResult& pt : c.points) visit_point_fields(fields, pt);
+  visit_series_fields(fields, c.series);
   return h.hex();
 }
+
+namespace {
 
 template <class Pairs>
 std::string joined_names(const Pairs& items) {
@@ -272,7 +278,7 @@ void write_checkpoint(const std::string& path, const Checkpoint& c) {
       f.write_matrix(root, a.name, a.values, a.values.size() / a.columns, a.columns);
     }
     write_results(f, c.points, c.series, c.replicas);
-    f.set_attribute(root, "checksum", checksum(c));
+    f.set_attribute(root, "checksum", checkpoint_checksum(c));
     f.flush();
   }
   out.commit();
@@ -307,7 +313,8 @@ Checkpoint read_checkpoint(const std::string& path) {
     c.record.arrays.push_back({name, std::move(values), cols});
   }
   read_results(f, c.points, c.series, c.replicas);
-  const std::string stored = f.string_attribute(root, "checksum"), computed = checksum(c);
+  const std::string stored = f.string_attribute(root, "checksum"),
+                    computed = checkpoint_checksum(c);
   if (stored != computed) {
     f.fail("checksum mismatch (stored " + stored + ", computed " + computed +
            "): the checkpoint is corrupted; remove it to start the run over");

@@ -43,6 +43,11 @@ struct Checkpoint {
   TimeSeries series;
 };
 
+/// FNV-1a (64 bit, as 16 hex digits) over every byte a resume uses: the fingerprint, the record
+/// and every field of the results so far (point_result.hpp's lists). A bit flipped on disk
+/// changes it, so a damaged checkpoint is refused instead of resumed.
+std::string checkpoint_checksum(const Checkpoint& c);
+
 /// How this rank's rows travel to and from whole-network arrays of `width` columns. Both are
 /// collective over ranks.
 struct RowExchange {

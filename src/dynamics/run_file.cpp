@@ -10,117 +10,216 @@ namespace hmfnet {
 
 namespace {
 
-std::vector<double> stack(const std::vector<PointResult>& points,
-                          std::vector<double> PointResult::*field) {
-  std::vector<double> out;
-  for (const auto& p : points) out.insert(out.end(), (p.*field).begin(), (p.*field).end());
-  return out;
-}
+// A PointResult field over all points, in the order of visit_point_fields.
+enum class FieldKind { scalar, text, per_replica, per_node_replica, node_vector };
 
-void unstack(std::vector<PointResult>& points, std::vector<double> PointResult::*field,
-             const std::vector<double>& data, std::size_t per_point) {
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    const auto first = data.begin() + static_cast<std::ptrdiff_t>(k * per_point);
-    (points[k].*field).assign(first, first + static_cast<std::ptrdiff_t>(per_point));
+struct Column {
+  std::string name;
+  FieldKind kind;
+  std::vector<double> values;
+  std::vector<std::string> strings;
+};
+
+// Stacks each field of the points it visits into its column, point after point. The columns are
+// laid out from a default PointResult, so a run without points still writes every required one.
+class Stacker {
+ public:
+  Stacker() {
+    PointResult shape;
+    visit_point_fields(*this, shape);
+    m_declared = true;
+  }
+  void add(const PointResult& p) {
+    m_next = 0;
+    visit_point_fields(*this, p);
+  }
+  const std::vector<Column>& columns() const { return m_columns; }
+
+  void scalar(const char* name, const double& x) { at(name, FieldKind::scalar, {x}); }
+  void text(const char* name, const std::string& s) {
+    Column& c = at(name, FieldKind::text, {});
+    if (m_declared) c.strings.push_back(s);
+  }
+  void per_replica(const char* name, const std::vector<double>& v) {
+    at(name, FieldKind::per_replica, v);
+  }
+  void per_node_replica(const char* name, const std::vector<double>& v) {
+    at(name, FieldKind::per_node_replica, v);
+  }
+  void node_vector(const char* name, const std::vector<double>& v) {
+    at(name, FieldKind::node_vector, v);
+  }
+
+ private:
+  Column& at(const char* name, FieldKind kind, const std::vector<double>& values) {
+    if (!m_declared) {
+      m_columns.push_back({name, kind, {}, {}});
+      return m_columns.back();
+    }
+    Column& c = m_columns[m_next++];
+    c.values.insert(c.values.end(), values.begin(), values.end());
+    return c;
+  }
+  std::vector<Column> m_columns;
+  std::size_t m_next = 0;
+  bool m_declared = false;
+};
+
+void write_column(const Hdf5File& f, hid_t group, const Column& c, std::size_t points,
+                  std::size_t replicas) {
+  switch (c.kind) {
+    case FieldKind::scalar:
+      f.write(group, c.name, c.values);
+      return;
+    case FieldKind::text:
+      f.write_strings(group, c.name, c.strings);
+      return;
+    case FieldKind::per_replica:
+      f.write_matrix(group, c.name, c.values, points, replicas);
+      return;
+    case FieldKind::per_node_replica:  // node data only: absent without it
+      if (!c.values.empty()) {
+        f.write_matrix(group, c.name, c.values, c.values.size() / replicas, replicas);
+      }
+      return;
+    case FieldKind::node_vector:
+      if (!c.values.empty()) {
+        f.write_matrix(group, c.name, c.values, points, c.values.size() / points);
+      }
+      return;
   }
 }
 
-const std::pair<const char*, std::vector<double> PointResult::*> k_per_replica[] = {
-    {"R_mean", &PointResult::R_mean},
-    {"R_sem", &PointResult::R_sem},
-    {"energy_rel_error_max", &PointResult::energy_rel_error_max},
-    {"momentum_drift", &PointResult::momentum_drift}};
+// Reads every column back (the node-data ones may be absent), then hands each point its share:
+// one value, one string, or an equal slice of the column.
+class Unstacker {
+ public:
+  Unstacker(const Hdf5File& f, hid_t group, std::size_t replicas)
+      : m_file(f), m_group(group), m_replicas(replicas) {}
 
-const std::pair<const char*, std::vector<double> PointResult::*> k_per_node[] = {
-    {"R_node", &PointResult::R_node}, {"omega_node", &PointResult::omega_node}};
+  std::vector<PointResult> points() {
+    std::vector<PointResult> points(m_file.read_double(m_group, "K").size());
+    m_points = points.size();
+    for (m_point = 0; m_point < m_points; ++m_point) {
+      m_next = 0;
+      visit_point_fields(*this, points[m_point]);
+    }
+    return points;
+  }
 
-// Replica-0 vectors of the same length at every point: stored [points x length].
-const std::pair<const char*, std::vector<double> PointResult::*> k_per_point_vector[] = {
-    {"r_node", &PointResult::r_node},
-    {"fluctuation", &PointResult::fluctuation},
-    {"synchronised", &PointResult::synchronised},
-    {"phase_histogram", &PointResult::phase_histogram},
-    {"rotor_theta_bar", &PointResult::rotor_theta_bar},
-    {"rotor_p_bar", &PointResult::rotor_p_bar},
-    {"psi_frequency", &PointResult::psi_frequency},
-    {"frame", &PointResult::frame}};
+  void scalar(const char* name, double& x) { x = column(name, FieldKind::scalar).values[m_point]; }
+  void text(const char* name, std::string& s) {
+    s = column(name, FieldKind::text).strings[m_point];
+  }
+  void per_replica(const char* name, std::vector<double>& v) {
+    slice(column(name, FieldKind::per_replica), v);
+  }
+  void per_node_replica(const char* name, std::vector<double>& v) {
+    slice(column(name, FieldKind::per_node_replica), v);
+  }
+  void node_vector(const char* name, std::vector<double>& v) {
+    slice(column(name, FieldKind::node_vector), v);
+  }
 
-// Per-point arrays present only with node data: [points * rows x cols], split evenly by point.
-template <class Table>
-void read_optional(const Hdf5File& f, hid_t group, std::vector<PointResult>& points,
-                   const Table& table) {
-  for (const auto& [name, field] : table) {
-    if (!f.exists(std::string("points/") + name) || points.empty()) continue;
+ private:
+  // The column `name`, read when the first point asks for it and checked against the K count.
+  const Column& column(const char* name, FieldKind kind) {
+    if (m_next == m_columns.size()) m_columns.push_back(read(name, kind));
+    return m_columns[m_next++];
+  }
+  Column read(const char* name, FieldKind kind) const {
+    Column c{name, kind, {}, {}};
+    const std::string path = std::string("points/") + name;
+    const bool node_data = kind == FieldKind::per_node_replica || kind == FieldKind::node_vector;
+    if (node_data && !m_file.exists(path)) return c;  // a run without node data
+    std::size_t size = 0;
+    if (kind == FieldKind::text) {
+      c.strings = m_file.read_strings(m_group, name);
+      size = c.strings.size();
+    } else if (kind == FieldKind::scalar) {
+      c.values = m_file.read_double(m_group, name);
+      size = c.values.size();
+    } else {
+      std::size_t rows = 0, cols = 0;
+      c.values = m_file.read_matrix(m_group, name, rows, cols);
+      size = c.values.size();
+    }
+    const std::size_t per_point = kind == FieldKind::per_replica ? m_replicas : 1;
+    if (node_data ? size % m_points != 0 : size != m_points * per_point) {
+      m_file.fail(path + " must have " + (per_point == 1 ? "one entry" : "one row of replicas") +
+                  " per K");
+    }
+    return c;
+  }
+  void slice(const Column& c, std::vector<double>& v) const {
+    const std::size_t per_point = c.values.size() / m_points;
+    const auto first = c.values.begin() + static_cast<std::ptrdiff_t>(m_point * per_point);
+    v.assign(first, first + static_cast<std::ptrdiff_t>(per_point));
+  }
+
+  const Hdf5File& m_file;
+  hid_t m_group;
+  std::size_t m_replicas;
+  std::vector<Column> m_columns;
+  std::size_t m_next = 0, m_point = 0, m_points = 0;
+};
+
+// The time series: one dataset per field, [records] or [records x replicas].
+class SeriesWriter {
+ public:
+  SeriesWriter(const Hdf5File& f, hid_t group, std::size_t records, std::size_t replicas)
+      : m_file(f), m_group(group), m_records(records), m_replicas(replicas) {}
+  void per_record(const char* name, const std::vector<double>& v) {
+    m_file.write(m_group, name, v);
+  }
+  void per_record_replica(const char* name, const std::vector<double>& v) {
+    m_file.write_matrix(m_group, name, v, m_records, m_replicas);
+  }
+
+ private:
+  const Hdf5File& m_file;
+  hid_t m_group;
+  std::size_t m_records, m_replicas;
+};
+
+class SeriesReader {
+ public:
+  SeriesReader(const Hdf5File& f, hid_t group) : m_file(f), m_group(group) {}
+  void per_record(const char* name, std::vector<double>& v) {
+    v = m_file.read_double(m_group, name);
+  }
+  void per_record_replica(const char* name, std::vector<double>& v) {
     std::size_t rows = 0, cols = 0;
-    const auto data = f.read_matrix(group, name, rows, cols);
-    unstack(points, field, data, data.size() / points.size());
+    v = m_file.read_matrix(m_group, name, rows, cols);
   }
-}
+
+ private:
+  const Hdf5File& m_file;
+  hid_t m_group;
+};
 
 }  // namespace
 
 void write_results(const Hdf5File& f, const std::vector<PointResult>& points,
                    const TimeSeries& series, int replicas) {
   const auto w = static_cast<std::size_t>(replicas);
+  Stacker stacker;
+  for (const PointResult& p : points) stacker.add(p);
   const H5Id pg = f.create_group("points");
-  std::vector<double> K, h;
-  std::vector<std::string> integrator;
-  for (const auto& p : points) {
-    K.push_back(p.K);
-    h.push_back(p.h);
-    integrator.push_back(p.integrator);
-  }
-  f.write(pg.get(), "K", K);
-  f.write(pg.get(), "h", h);
-  f.write_strings(pg.get(), "integrator", integrator);
-  for (const auto& [name, field] : k_per_replica) {
-    f.write_matrix(pg.get(), name, stack(points, field), points.size(), w);
-  }
-  for (const auto& [name, field] : k_per_node) {
-    const auto data = stack(points, field);
-    if (!data.empty()) f.write_matrix(pg.get(), name, data, data.size() / w, w);
-  }
-  for (const auto& [name, field] : k_per_point_vector) {
-    const auto data = stack(points, field);
-    if (!data.empty())
-      f.write_matrix(pg.get(), name, data, points.size(), data.size() / points.size());
-  }
+  for (const Column& c : stacker.columns()) write_column(f, pg.get(), c, points.size(), w);
   const H5Id tg = f.create_group("timeseries");
-  f.write(tg.get(), "t", series.t);
-  f.write(tg.get(), "K", series.K);
-  f.write_matrix(tg.get(), "R", series.R, series.t.size(), w);
-  f.write_matrix(tg.get(), "energy", series.energy, series.t.size(), w);
-  f.write_matrix(tg.get(), "momentum", series.momentum, series.t.size(), w);
+  SeriesWriter writer(f, tg.get(), series.t.size(), w);
+  visit_series_fields(writer, series);
 }
 
 void read_results(const Hdf5File& f, std::vector<PointResult>& points, TimeSeries& series,
                   int replicas) {
-  const auto w = static_cast<std::size_t>(replicas);
   const H5Id pg = f.open_group("points");
-  const std::vector<double> K = f.read_double(pg.get(), "K");
-  const std::vector<double> h = f.read_double(pg.get(), "h");
-  const std::vector<std::string> integrator = f.read_strings(pg.get(), "integrator");
-  if (h.size() != K.size() || integrator.size() != K.size()) {
-    f.fail("points/h and points/integrator must have one entry per K");
-  }
-  points.assign(K.size(), PointResult{});
-  for (std::size_t k = 0; k < K.size(); ++k) {
-    points[k].K = K[k];
-    points[k].h = h[k];
-    points[k].integrator = integrator[k];
-  }
-  std::size_t rows = 0, cols = 0;
-  for (const auto& [name, field] : k_per_replica) {
-    unstack(points, field, f.read_matrix(pg.get(), name, rows, cols), w);
-  }
-  read_optional(f, pg.get(), points, k_per_node);
-  read_optional(f, pg.get(), points, k_per_point_vector);
+  Unstacker unstacker(f, pg.get(), static_cast<std::size_t>(replicas));
+  points = unstacker.points();
   const H5Id tg = f.open_group("timeseries");
-  series.t = f.read_double(tg.get(), "t");
-  series.K = f.read_double(tg.get(), "K");
-  series.R = f.read_matrix(tg.get(), "R", rows, cols);
-  series.energy = f.read_matrix(tg.get(), "energy", rows, cols);
-  series.momentum = f.read_matrix(tg.get(), "momentum", rows, cols);
+  SeriesReader reader(f, tg.get());
+  visit_series_fields(reader, series);
 }
 
 namespace {

@@ -17,36 +17,13 @@
 
 #include "dynamics/coupling_force.hpp"
 #include "dynamics/integrator.hpp"
+#include "dynamics/point_result.hpp"
 #include "dynamics/rotor_state.hpp"
 #include "dynamics/simulation_parameters.hpp"
 #include "dynamics/step_choice.hpp"
 #include "parallel/distributed_network.hpp"
 
 namespace hmfnet {
-
-struct PointResult {
-  double K = 0.0;
-  std::string integrator;                    ///< the method of this K's segment (step_at)
-  double h = 0.0;                            ///< the step of this K's segment
-  std::vector<double> R_mean, R_sem;         ///< per replica
-  std::vector<double> energy_rel_error_max;  ///< per replica, over the whole segment
-  std::vector<double> momentum_drift;        ///< per replica: max |P(t) - P(0)| / sum |p_n(0)|
-  std::vector<double> R_node;                ///< N x replicas: <R_n>_t (node_data)
-  std::vector<double> omega_node;            ///< N x replicas: Omega_n (node_data)
-  // node_data, replica 0 (see node_statistics.hpp):
-  std::vector<double> r_node;                        ///< r_n of eq:rnDef, N
-  std::vector<double> fluctuation;                   ///< Re<z_n e^{-i theta_bar_n}>_t, N
-  std::vector<double> synchronised;                  ///< <r_n cos theta_bar_n>_t, N
-  std::vector<double> phase_histogram;               ///< psi_n - psi_1 counts over [-pi, pi)
-  std::vector<double> rotor_theta_bar, rotor_p_bar;  ///< samples of the chosen rotor
-  std::vector<double> psi_frequency;                 ///< N: mean rate of the unwrapped psi_n
-  std::vector<double> frame;  ///< {measured frame frequency Omega, phi, P/N} (node_statistics.hpp)
-};
-
-struct TimeSeries {
-  std::vector<double> t, K;                 ///< per record (t: time since the run started)
-  std::vector<double> R, energy, momentum;  ///< records x replicas
-};
 
 struct SimulationResult {
   std::vector<PointResult> points;

@@ -43,6 +43,16 @@ py::array_t<double> vector(const std::vector<double>& values) {
   return a;
 }
 
+// Every field of the time series (point_result.hpp's list) as a numpy array.
+struct SeriesArrays {
+  py::dict arrays;
+  std::size_t records;
+  void per_record(const char* name, const std::vector<double>& v) { arrays[name] = vector(v); }
+  void per_record_replica(const char* name, const std::vector<double>& v) {
+    arrays[name] = matrix(v, records);
+  }
+};
+
 // One command at a time: MPI, Tpetra and the interrupt flag are process-wide, and two Python
 // threads could otherwise enter them together once the GIL is released.
 std::mutex g_command_mutex;
@@ -126,14 +136,9 @@ py::object simulate(const PythonNetwork& net, const std::vector<std::string>& to
     return cli::simulate_report(f, net.distributed(), hooks);
   }();
   py::dict out = to_python(run.report.json);
-  const TimeSeries& s = run.result.series;
-  py::dict series;
-  series["t"] = vector(s.t);
-  series["K"] = vector(s.K);
-  series["R"] = matrix(s.R, s.t.size());
-  series["energy"] = matrix(s.energy, s.t.size());
-  series["momentum"] = matrix(s.momentum, s.t.size());
-  out["timeseries"] = series;
+  SeriesArrays series{{}, run.result.series.t.size()};
+  visit_series_fields(series, run.result.series);
+  out["timeseries"] = series.arrays;
   return std::move(out);
 }
 

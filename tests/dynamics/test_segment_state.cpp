@@ -14,34 +14,14 @@
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
 #include "parallel/parallel_session.hpp"
+#include "support/member_count.hpp"
 #include "support/simulation_runs.hpp"
 
 using namespace hmfnet;
+using hmfnet::test::member_count;
 using hmfnet::test::temp_path;
 
 namespace {
-
-// The number of members of an aggregate: the largest count of arguments it can be brace-
-// initialised from (each argument converts to any member type).
-struct AnyMember {
-  template <class T>
-  operator T&() const;  // never defined: used in unevaluated contexts only
-};
-
-template <class T, class Indices, class = void>
-struct BraceConstructible : std::false_type {};
-template <class T, std::size_t... I>
-struct BraceConstructible<T, std::index_sequence<I...>,
-                          std::void_t<decltype(T{(void(I), AnyMember{})...})>> : std::true_type {};
-
-template <class T, std::size_t N = 0>
-constexpr std::size_t member_count() {
-  if constexpr (BraceConstructible<T, std::make_index_sequence<N + 1>>::value) {
-    return member_count<T, N + 1>();
-  } else {
-    return N;
-  }
-}
 
 // Counts the fields a list visits, whatever their kind (every kind forwards to `count`).
 struct FieldCounter {
