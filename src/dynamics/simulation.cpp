@@ -10,12 +10,16 @@
 #include <numeric>
 
 #include "core/error.hpp"
+#include "dynamics/blow_up_guard.hpp"
 #include "dynamics/checkpoint.hpp"
+#include "dynamics/checkpoint_timer.hpp"
 #include "dynamics/interrupt.hpp"
 #include "dynamics/node_statistics.hpp"
 #include "dynamics/ordered_sum.hpp"
+#include "dynamics/progress_line.hpp"
 #include "dynamics/replica_lanes.hpp"
 #include "dynamics/segment_state.hpp"
+#include "dynamics/series_recorder.hpp"
 #include "dynamics/thread_choice.hpp"
 #include "dynamics/time_average.hpp"
 #include "parallel/network_content_hash.hpp"
@@ -52,10 +56,6 @@ TimeOrigin time_origin(const SimulationParameters& p, std::size_t k) {
   return origin;
 }
 
-struct Observables {
-  std::vector<double> R, energy, momentum, momentum_scale;
-};
-
 // One run of the schedule on this rank's rows. The rules that keep it correct:
 //  - m_state, m_f and m_seg travel together: m_f holds the force at m_state's phases (any change
 //    of m_state outside an integrator step is followed by m_f.update), and m_seg holds the
@@ -67,7 +67,7 @@ struct Observables {
 //    (a resume starts from the checkpoint's counts); every exit from the stepping loop goes
 //    through finish(), which sets the counts and the integration time.
 //  - Collective (every rank calls them at the same step, in the same order): order_parameter,
-//    observe, sample, record, guard, start_segment, finish_segment, maybe_checkpoint, restore,
+//    observe, sample, record (and its observers), start_segment, finish_segment, restore,
 //    and m_exchange's gather and scatter. A decision that ends or branches the loop is agreed over
 //    ranks first (the root's clock decides a timed checkpoint, the maximum over ranks a signal or a
 //    blow-up), so no rank waits in a collective that another has skipped.
@@ -89,7 +89,14 @@ class Run {
         m_width(static_cast<int>(params.replicas.size())),
         m_total_degree(std::accumulate(degrees.begin(), degrees.end(), 0.0)),
         m_n(static_cast<double>(network.global_size())),
-        m_exchange(row_exchange(network, params.checkpoint_path)) {}
+        m_exchange(row_exchange(network, params.checkpoint_path)),
+        m_series(m_result.series),
+        m_guard(params.energy_tolerance, identity.replicas.size()),
+        m_progress(params.progress && ParallelSession::rank() == 0, total_steps(params)),
+        m_checkpoints(
+            params.checkpoint_path.empty() ? std::function<void()>{}
+                                           : [this] { write_checkpoint_now(); },
+            params.checkpoint_seconds) {}
 
   SimulationResult execute();
 
@@ -109,14 +116,19 @@ class Run {
   SegmentState fresh_segment(double omega) const;
   void start_segment(int k_index);
   void finish_segment(int k_index);
-  void record(int k_index);
+  bool record(int k_index);
   void sample();
-  void guard(const std::vector<double>& K, const std::vector<double>& errors);
-  void maybe_checkpoint(int k_index, bool force_now);
+  void write_checkpoint_now();
   void finish(bool interrupted);
   void restore(const Checkpoint& c);
   std::int64_t rotor_samples() const;
-  void progress(int k_index, bool final_line) const;
+  double max_node_order() const;
+  static double total_steps(const SimulationParameters& p) {
+    double total = 0.0;
+    for (std::size_t k = 0; k < p.K.size(); ++k)
+      total += static_cast<double>(steps_for(p.duration, step_at(p, k).h));
+    return total;
+  }
   /// Collective the first time (the network's content hash): called by every rank alike.
   std::string run_fingerprint() {
     if (m_fingerprint.empty()) {
@@ -144,10 +156,16 @@ class Run {
   RotorState m_state;
   SegmentState m_seg;
   SimulationResult m_result;
+  // The observers of the records (run_record.hpp), in the order they see each one; the checkpoint
+  // timer comes after the interrupt check (record).
+  SeriesRecorder m_series;
+  BlowUpGuard m_guard;
+  ProgressLine m_progress;
+  CheckpointTimer m_checkpoints;
+  int m_k = 0;  // the K being integrated (what a checkpoint records)
   int m_k_start = 0;
   double m_seconds_before = 0.0;  // integration seconds of earlier sessions (resume)
   Clock::time_point m_loop_start{};
-  Clock::time_point m_last_checkpoint{};
 };
 
 std::vector<double> Run::order_parameter() const {
@@ -253,39 +271,18 @@ std::vector<double> Run::energy_errors(const Observables& o) const {
   return errors;
 }
 
-void Run::guard(const std::vector<double>& K, const std::vector<double>& errors) {
-  // Every rank holds the same (reduced) energies, so every rank takes the same branch.
-  for (std::size_t b = 0; b < errors.size(); ++b) {
-    const double err = errors[b];
-    if (std::isfinite(err) && err <= m_params.energy_tolerance) continue;
-    // The fastest local libration frequency is omega_max = sqrt(K max_n R_n) (small oscillations
-    // in the well K R_n cos(theta - psi_n)); the running method is stable for h omega_max below
-    // its own linear bound (Integrator::stability_limit).
-    const auto& y = m_force.local_fields();
-    double max_r = 0.0;
-    for (std::size_t k = 0; 2 * k + 1 < y.size(); ++k) {
-      max_r = std::max(max_r, std::hypot(y[2 * k], y[2 * k + 1]) / m_n);
-    }
-    max_r = ParallelSession::max(max_r);
-    const double omega = std::sqrt(K[b] * max_r);
-    const double limit = m_integrator->stability_limit();
-    const std::string what = std::isfinite(err) ? "relative energy error " + number_text(err) +
-                                                      " exceeds the tolerance " +
-                                                      number_text(m_params.energy_tolerance)
-                                                : std::string("energy is NaN or infinite");
-    char message[640];
-    std::snprintf(
-        message, sizeof message,
-        "K = %g, t = %g (replica %zu of this K): %s; the step h = %g is likely too large for "
-        "this K: %s is stable for h * omega_max < %.4g with omega_max = "
-        "sqrt(K max_n R_n) = %.4g, i.e. h < %.4g",
-        K[b], static_cast<double>(m_seg.step) * m_h, b % m_identity.replicas.size(), what.c_str(),
-        m_h, m_integrator->name().c_str(), limit, omega, omega > 0 ? limit / omega : INFINITY);
-    throw SimulationBlowUp(message);
+double Run::max_node_order() const {
+  const auto& y = m_force.local_fields();
+  double max_r = 0.0;
+  for (std::size_t k = 0; 2 * k + 1 < y.size(); ++k) {
+    max_r = std::max(max_r, std::hypot(y[2 * k], y[2 * k + 1]) / m_n);
   }
+  return ParallelSession::max(max_r);
 }
 
-void Run::record(int k_index) {
+// Forms the record, updates the segment's drift maxima and hands the record to the observers.
+// Returns true when a signal stops the run here (after a final checkpoint).
+bool Run::record(int k_index) {
   const std::vector<double> K = segment_K(k_index);
   const Observables o = observe(K);
   if (m_params.node_data && m_seg.step > transient_steps()) {
@@ -297,26 +294,35 @@ void Run::record(int k_index) {
     const double drift = std::abs(o.momentum[b] - m_seg.momentum0[b]) / m_seg.momentum_scale[b];
     m_seg.momentum_drift_max[b] = std::max(m_seg.momentum_drift_max[b], drift);
   }
-  auto& ts = m_result.series;
-  ts.t.push_back(m_origin.t + static_cast<double>(m_result.steps - m_origin.steps) * m_h);
-  ts.K.push_back(K.front());  // a run across replicas has its K per record from split_lanes
-  ts.R.insert(ts.R.end(), o.R.begin(), o.R.end());
-  ts.energy.insert(ts.energy.end(), o.energy.begin(), o.energy.end());
-  ts.momentum.insert(ts.momentum.end(), o.momentum.begin(), o.momentum.end());
-  guard(K, errors);
+  RunRecord r;
+  r.k_index = k_index;
+  r.K = &K;
+  r.segment_step = m_seg.step;
+  r.segment_steps = segment_steps();
+  r.steps_total = m_result.steps;
+  r.h = m_h;
+  r.t = m_origin.t + static_cast<double>(m_result.steps - m_origin.steps) * m_h;
+  r.observed = &o;
+  r.energy_errors = &errors;
+  r.integrator = m_integrator->name();
+  r.stability_limit = m_integrator->stability_limit();
+  r.max_node_order = [this] { return max_node_order(); };
+  for (RunObserver* observer :
+       std::initializer_list<RunObserver*>{&m_series, &m_guard, &m_progress})
+    observer->on_record(r);
+  // SIGINT/SIGTERM (interrupt.hpp): every rank stops at the same record, after a final
+  // checkpoint, so --resume continues from here.
+  if (ParallelSession::max(static_cast<double>(interrupt_signal())) > 0.0) {
+    m_checkpoints.write_now();
+    return true;
+  }
+  m_checkpoints.on_record(r);
+  return false;
 }
 
-void Run::maybe_checkpoint(int k_index, bool force_now) {
-  if (m_params.checkpoint_path.empty()) return;
-  const double since = std::chrono::duration<double>(Clock::now() - m_last_checkpoint).count();
-  // Wall clocks differ between ranks: the root decides for everyone.
-  const bool due =
-      force_now ||
-      ParallelSession::max(
-          ParallelSession::rank() == 0 && since >= m_params.checkpoint_seconds ? 1.0 : 0.0) > 0.0;
-  if (!due) return;
+void Run::write_checkpoint_now() {
   RunPosition position;
-  position.k_index = k_index;
+  position.k_index = m_k;
   position.steps_total = m_result.steps;
   position.evaluations = m_f.count() + m_result.force_evaluations;
   position.integration_seconds =
@@ -331,7 +337,6 @@ void Run::maybe_checkpoint(int k_index, bool force_now) {
   c.series = m_result.series;
   if (ParallelSession::rank() == 0) write_checkpoint(m_params.checkpoint_path, c);
   ParallelSession::max(0.0);  // barrier: no rank moves on before the checkpoint is in place
-  m_last_checkpoint = Clock::now();
 }
 
 void Run::finish(bool interrupted) {
@@ -404,19 +409,6 @@ void Run::finish_segment(int k_index) {
   m_result.points.push_back(std::move(point));
 }
 
-void Run::progress(int k_index, bool final_line) const {
-  if (!m_params.progress || ParallelSession::rank() != 0) return;
-  const double seconds = std::chrono::duration<double>(Clock::now() - m_loop_start).count();
-  const double done = static_cast<double>(m_result.steps);
-  double total = 0.0;
-  for (std::size_t k = 0; k < m_params.K.size(); ++k)
-    total += static_cast<double>(steps_for(m_params.duration, step_at(m_params, k).h));
-  const double rate = seconds > 0 ? done / seconds : 0.0;
-  std::fprintf(stderr, "\rK = %-10g t = %-9.1f %8.0f steps/s  %6.1f s left   %s",
-               m_params.K[static_cast<std::size_t>(k_index)], static_cast<double>(m_seg.step) * m_h,
-               rate, rate > 0 ? (total - done) / rate : 0.0, final_line ? "\n" : "");
-}
-
 SimulationResult Run::execute() {
   m_state = initial_state(m_network.first_row(), m_network.local_size(), m_params.replicas);
   m_f.update(m_state);
@@ -428,12 +420,14 @@ SimulationResult Run::execute() {
     start_segment(0);
   }
   m_loop_start = Clock::now();
-  m_last_checkpoint = m_loop_start;
+  m_checkpoints.restart();
+  m_progress.start(m_result.steps);
   std::int64_t session_steps = 0;
   for (int k = m_k_start; k < static_cast<int>(m_params.K.size()); ++k) {
+    m_k = k;
     if (k != m_k_start) {
       start_segment(k);
-      maybe_checkpoint(k, true);  // at every K: a resume restarts here at worst
+      m_checkpoints.write_now();  // at every K: a resume restarts here at worst
     }
     const std::vector<double> K = segment_K(k);
     const std::int64_t steps = segment_steps(), transient = transient_steps();
@@ -447,22 +441,14 @@ SimulationResult Run::execute() {
       ++m_result.steps;
       if (m_seg.step > transient) sample();
       if (m_seg.step == transient && m_params.node_data) m_seg.theta_T1 = m_state.theta;
-      if (m_seg.step % m_params.record_stride == 0 || m_seg.step == steps) {
-        record(k);
-        progress(k, false);
-        // SIGINT/SIGTERM (interrupt.hpp): every rank stops at the same record, after a final
-        // checkpoint, so --resume continues from here.
-        if (ParallelSession::max(static_cast<double>(interrupt_signal())) > 0.0) {
-          maybe_checkpoint(k, true);
-          finish(true);
-          return m_result;
-        }
-        if (m_seg.step < steps) maybe_checkpoint(k, false);
+      if ((m_seg.step % m_params.record_stride == 0 || m_seg.step == steps) && record(k)) {
+        finish(true);
+        return m_result;
       }
     }
     finish_segment(k);
   }
-  progress(static_cast<int>(m_params.K.size()) - 1, true);
+  m_progress.finish();
   finish(false);
   return m_result;
 }

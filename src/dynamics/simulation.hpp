@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/blow_up_guard.hpp"
 #include "dynamics/coupling_force.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/point_result.hpp"
@@ -38,12 +39,6 @@ struct SimulationResult {
   std::string force_name;
   bool resumed = false;
   bool interrupted = false;  ///< stopped by stop_after_steps or a signal: points incomplete
-};
-
-/// NaN/Inf or an energy error beyond the tolerance.
-class SimulationBlowUp : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
 };
 
 /// Runs the schedule. Collective over ranks: `network` is the distributed matrix and `force`
