@@ -32,8 +32,9 @@ class CouplingForce {
   virtual void evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) = 0;
   /// Stored entries of A this rank reads per evaluation (for throughput figures).
   virtual EdgeOffset work_per_evaluation() const = 0;
-  /// Stored entries gathered per evaluation, for the default thread count (thread_choice.hpp):
-  /// those read, unless the force reads none (the rank-one force).
+  /// The work of an evaluation besides k_row_work per row, for the default thread count
+  /// (thread_choice.hpp: step_work), in gathers: the stored entries read; negative for the
+  /// rank-one force, which reads none and whose rows cost less (k_rank_one_row_work).
   virtual EdgeOffset gathers_per_evaluation() const { return work_per_evaluation(); }
   /// Short name for logs and output files ("sparse", "rank-one").
   virtual const char* name() const = 0;

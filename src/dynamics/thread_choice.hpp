@@ -46,6 +46,18 @@ inline constexpr std::int64_t k_work_per_thread_passive = 600'000;
 /// and --threads 1 ran the same single thread (noise; docs/performance.md "Threads").
 inline constexpr std::int64_t k_row_work = 40;
 
+/// A row and replica of the complete graph's rank-one force in the same units: its sin/cos, its
+/// share of the two passes (Z; g with the order and coupling sums), kick and drift. Chosen by the
+/// measured two-thread choices, not derived (the per-row times come from different machines and
+/// loads: 8-9 ns idle on the Intel Xeon before the AVX-512 sin/cos, 7.3 ns after it under load,
+/// against a sparse row's 19 ns plus 0.46 ns a gather on the AMD EPYC). Counted at k_row_work,
+/// K_N N = 400 with 16 replicas (2.6 10^5) took two threads and ran 1.28x slower than with one
+/// (AMD EPYC); at 12 it takes one, and a second thread comes at N = 1100 with 16 replicas
+/// (2 10^5) and N = 16,700 with one (spinning), keeping bench/thread_rule.sh's measured gains
+/// (1.4x at N = 1600 with 16, 1.9x at N = 2 10^4 with one). RankOneForce::gathers_per_evaluation
+/// reports the difference (negative) so that step_work counts its rows at this weight.
+inline constexpr std::int64_t k_rank_one_row_work = 12;
+
 /// The rule's work of one step on this rank: (gathers + k_row_work x rows) x replica lanes.
 std::int64_t step_work(std::int64_t gathers, std::int64_t rows, std::int64_t lanes);
 

@@ -40,15 +40,20 @@ TEST_CASE("The default thread count follows the work per step and the wait polic
   CHECK(default_threads(step_work(1'000'000, 10'000, 1), 2, passive) == 2);
   // ER N = 10^5, d = 20: two under either policy (1.6x when passive).
   CHECK(default_threads(step_work(2'000'000, 100'000, 1), 2, passive) == 2);
-  // The complete graph (no gathers): N = 200 with 16 replicas, one (0.9x); N = 1600 with 16 and
+  // The complete graph (no gathers; rows at k_rank_one_row_work): N = 200 and 400 with 16
+  // replicas, one (0.9x; 0.78x at N = 400, which k_row_work gave two); N = 1600 with 16 and
   // N = 2 10^4 with one, two when spinning (1.4x, 1.9x) and one when passive (0.6x, 0.65x);
   // N = 10^5, two under either policy (1.4x when passive).
-  CHECK(default_threads(step_work(0, 200, 16), 2, spinning) == 1);
-  CHECK(default_threads(step_work(0, 1'600, 16), 2, spinning) == 2);
-  CHECK(default_threads(step_work(0, 1'600, 16), 2, passive) == 1);
-  CHECK(default_threads(step_work(0, 20'000, 1), 2, spinning) == 2);
-  CHECK(default_threads(step_work(0, 20'000, 1), 2, passive) == 1);
-  CHECK(default_threads(step_work(0, 100'000, 1), 2, passive) == 2);
+  const auto rank_one = [](std::int64_t n, std::int64_t replicas) {
+    return step_work((k_rank_one_row_work - k_row_work) * n, n, replicas);
+  };
+  CHECK(default_threads(rank_one(200, 16), 2, spinning) == 1);
+  CHECK(default_threads(rank_one(400, 16), 2, spinning) == 1);
+  CHECK(default_threads(rank_one(1'600, 16), 2, spinning) == 2);
+  CHECK(default_threads(rank_one(1'600, 16), 2, passive) == 1);
+  CHECK(default_threads(rank_one(20'000, 1), 2, spinning) == 2);
+  CHECK(default_threads(rank_one(20'000, 1), 2, passive) == 1);
+  CHECK(default_threads(rank_one(100'000, 1), 2, passive) == 2);
   // ER N = 10^6, degree 100: every thread offered, and never more.
   CHECK(default_threads(step_work(100'000'000, 1'000'000, 1), 2, passive) == 2);
   CHECK(default_threads(step_work(100'000'000, 1'000'000, 1), 1, spinning) == 1);
@@ -93,15 +98,16 @@ TEST_CASE("A run reports the threads it used: the rule's, or the count it was gi
   CHECK_THROWS_AS(validate(p), ParameterError);
 }
 
-TEST_CASE("The rank-one force gives the rule its rows only, once per replica", "[threads]") {
+TEST_CASE("The rank-one force gives the rule its rows only, at their own weight, once per replica",
+          "[threads]") {
   const CompleteGraph graph = CompleteGraph::make(300, false);
   const DistributedNetwork d(graph);
   RankOneForce force(complete_graph_structure(graph), d.first_row(), d.local_size());
-  CHECK(force.gathers_per_evaluation() == 0);
+  CHECK(force.gathers_per_evaluation() == (k_rank_one_row_work - k_row_work) * 300);
   SimulationParameters p = test::short_run();
   p.K = {1.0};  // K lambda / N = 1: the all-to-all HMF's scale
   p.replicas = {{6.0, 1.0, 11}, {6.0, 1.0, 12}, {6.0, 1.0, 13}};
   const SimulationResult r =
       simulate(d, std::vector<double>(std::size_t{300}, graph.degree()), force, p);
-  CHECK(r.thread_rule_work == step_work(0, static_cast<std::int64_t>(d.local_size()), 3));
+  CHECK(r.thread_rule_work == k_rank_one_row_work * 300 * 3);
 }
