@@ -53,6 +53,10 @@ class CMakeBuild(build_ext):
             f"-DHMFNET_MODULE_OUTPUT_DIR={out.parent}",
             f"-DHMFNET_MODULE_SUFFIX={sysconfig.get_config_var('EXT_SUFFIX')}",
         ]
+        # A build folder reused by another venv or against another prefix must not keep the
+        # interpreter or the hmfnet that its cache found first; the objects stay, and are rebuilt
+        # only where the flags changed.
+        (build / "CMakeCache.txt").unlink(missing_ok=True)
         try:
             import pybind11
 
