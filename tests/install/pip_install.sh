@@ -20,7 +20,7 @@ fail() { cat "$log"; echo "pip_install.sh: $*"; exit 1; }
 times=""
 mark() { times+="$1 $((SECONDS - start)) s, "; start=$SECONDS; }
 start=$SECONDS
-tree_state() { git -C "$src" status --porcelain 2> /dev/null || true; }
+tree_state() { git -C "$src" --no-optional-locks status --porcelain 2> /dev/null || true; }
 before="$(tree_state)"
 
 cmake --install "$build" --prefix "$prefix" > "$log" 2>&1 || fail "cmake --install failed"
@@ -52,7 +52,8 @@ summary="$(tail -n 1 "$log")"
 
 [ "$(tree_state)" = "$before" ] || fail "the checkout changed: $(tree_state)"
 leftovers="$(find "$src/python" "$src/build" -maxdepth 1 \
-  \( -name '*.egg-info' -o -name 'lib.*' -o -name 'temp.*' -o -name 'bdist.*' \) 2> /dev/null)"
+  \( -name '*.egg-info' -o -name 'lib.*' -o -name 'temp.*' -o -name 'bdist.*' \) 2> /dev/null \
+  || true)"
 [ -z "$leftovers" ] || fail "setuptools wrote into the checkout: $leftovers"
 echo "pip_install.sh: ${times}tests/python in the venv: $summary"
 cd / && rm -rf "$work"
