@@ -16,6 +16,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libbenchmark-dev
   python3 python3-numpy python3-h5py python3-matplotlib
   python3-dev pybind11-dev python3-pybind11 python3-pytest python3-scipy python3-networkx  # python/hmfnet
+  python3-pip python3-venv python3-setuptools python3-wheel  # pip install . (tests/install/pip_install.sh)
   dpkg-dev  # cpack -G DEB: dpkg-shlibdeps (tests/install/debian_package.sh)
   clang libclang-rt-dev libomp-dev  # ci/fuzz.sh: libFuzzer and sanitizer runtimes, OpenMP for clang
   clang-format clang-tidy  # ci/format.sh, ci/tidy.sh

@@ -3,6 +3,9 @@
 #                                      headers under include/hmfnet, the shared provenance
 #                                      library), a CMake package (lib/cmake/hmfnet) and the Python
 #                                      module (lib/python3/dist-packages/hmfnet, Debian's layout)
+#   pip install . (P on CMAKE_PREFIX_PATH) the Python module again, built for the interpreter
+#                                      running pip against P (python/CMakeLists.txt): it links
+#                                      hmfnet::hmfnet_commands, the CLI's command layer
 #   cd build && cpack -G DEB           a Debian package of the same, runtime dependencies from
 #                                      dpkg-shlibdeps (dpkg-dev)
 # A C++ consumer writes find_package(hmfnet) and links hmfnet::hmfnet (tests/install/consumer).
@@ -27,15 +30,16 @@ set_target_properties(hmfnet PROPERTIES INSTALL_RPATH "$ORIGIN/${_hmfnet_bin_to_
 
 install(TARGETS hmfnet RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS hmfnet_library hmfnet_dynamics hmfnet_analysis hmfnet_parallel hmfnet_core
-                hmfnet_version_info hmfnet_warnings
+                hmfnet_version_info hmfnet_warnings hmfnet_commands hmfnet_cli_options
         EXPORT hmfnetTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-# The library's headers (src/cli and src/python are the programs, not the library).
+# The library's headers and those of the command layer (src/cli) that the Python module calls;
+# src/python is the module itself, built from a checkout.
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/src/
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/hmfnet
         FILES_MATCHING PATTERN "*.hpp"
-        PATTERN "cli" EXCLUDE PATTERN "python" EXCLUDE)
+        PATTERN "python" EXCLUDE)
 install(EXPORT hmfnetTargets NAMESPACE hmfnet::
         DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/hmfnet)
 configure_package_config_file(${CMAKE_SOURCE_DIR}/cmake/hmfnetConfig.cmake.in
@@ -75,5 +79,5 @@ if(HMFNET_PYTHON_MODULE)
 python3 (<< ${Python3_VERSION_MAJOR}.${_hmfnet_next_minor}), python3-numpy")
 endif()
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS
-    "python3-scipy, python3-networkx, python3-h5py, python3-matplotlib, libeigen3-dev, libboost-math-dev, libhdf5-dev, libopenmpi-dev, nlohmann-json3-dev, libtrilinos-tpetra-dev, libtrilinos-anasazi-dev, libtrilinos-zoltan2-dev, libptscotch-dev")
+    "python3-scipy, python3-networkx, python3-h5py, python3-matplotlib, libeigen3-dev, libboost-math-dev, libhdf5-dev, libopenmpi-dev, nlohmann-json3-dev, libcli11-dev, libtrilinos-tpetra-dev, libtrilinos-anasazi-dev, libtrilinos-zoltan2-dev, libptscotch-dev")
 include(CPack)
