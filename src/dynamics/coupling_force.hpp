@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "dynamics/rotor_state.hpp"
+#include "dynamics/thread_choice.hpp"
 
 namespace hmfnet {
 
@@ -32,10 +33,12 @@ class CouplingForce {
   virtual void evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) = 0;
   /// Stored entries of A this rank reads per evaluation (for throughput figures).
   virtual EdgeOffset work_per_evaluation() const = 0;
-  /// The work of an evaluation besides k_row_work per row, for the default thread count
-  /// (thread_choice.hpp: step_work), in gathers: the stored entries read; negative for the
-  /// rank-one force, which reads none and whose rows cost less (k_rank_one_row_work).
+  /// Stored entries gathered per evaluation, for the default thread count (thread_choice.hpp):
+  /// those read, unless the force reads none (the rank-one force).
   virtual EdgeOffset gathers_per_evaluation() const { return work_per_evaluation(); }
+  /// The work of one row and replica besides its gathers, in the thread rule's units
+  /// (thread_choice.hpp: k_row_work for a sparse row, k_rank_one_row_work for the rank-one force).
+  virtual std::int64_t row_work() const { return k_row_work; }
   /// Short name for logs and output files ("sparse", "rank-one").
   virtual const char* name() const = 0;
   /// y_n = sum_m A_nm e^{i theta_m} of the last evaluation, rows x replicas x [Re, Im]

@@ -41,12 +41,8 @@ class RankOneForce : public CouplingForce {
   void prepare(const RotorState& state, std::vector<double>& g, ForceSums& sums) override;
   void evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) override;
   EdgeOffset work_per_evaluation() const override { return m_rows; }
-  /// No gathers, and rows that cost less than a sparse row's own work: the difference,
-  /// (k_rank_one_row_work - k_row_work) per row (thread_choice.hpp), so that step_work counts
-  /// each row at k_rank_one_row_work.
-  EdgeOffset gathers_per_evaluation() const override {
-    return (k_rank_one_row_work - k_row_work) * m_rows;
-  }
+  EdgeOffset gathers_per_evaluation() const override { return 0; }  // rows only: thread_choice
+  std::int64_t row_work() const override { return k_rank_one_row_work; }
   const char* name() const override { return "rank-one"; }
   /// Formed from the last evaluation on first call after it (outside a team: not thread-safe).
   const std::vector<double>& local_fields() const override;

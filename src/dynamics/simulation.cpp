@@ -464,7 +464,7 @@ SimulationResult simulate(const DistributedNetwork& network, const std::vector<d
   }
   const std::int64_t work = step_work(static_cast<std::int64_t>(force.gathers_per_evaluation()),
                                       static_cast<std::int64_t>(network.local_size()),
-                                      static_cast<std::int64_t>(lanes(params)));
+                                      static_cast<std::int64_t>(lanes(params)), force.row_work());
   const ThreadCountScope threads(params.threads > 0 ? params.threads
                                                     : default_threads(work, omp_get_max_threads()));
   SimulationResult result;

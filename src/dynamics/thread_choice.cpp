@@ -18,8 +18,9 @@ WaitPolicy wait_policy_from_environment() {
   return policy == "PASSIVE" ? WaitPolicy::passive : WaitPolicy::spinning;
 }
 
-std::int64_t step_work(std::int64_t gathers, std::int64_t rows, std::int64_t lanes) {
-  return (gathers + k_row_work * rows) * lanes;
+std::int64_t step_work(std::int64_t gathers, std::int64_t rows, std::int64_t lanes,
+                       std::int64_t row_work) {
+  return (gathers + row_work * rows) * lanes;
 }
 
 int default_threads(std::int64_t work, int available, WaitPolicy policy) {

@@ -54,12 +54,12 @@ inline constexpr std::int64_t k_row_work = 40;
 /// K_N N = 400 with 16 replicas (2.6 10^5) took two threads and ran 1.28x slower than with one
 /// (AMD EPYC); at 12 it takes one, and a second thread comes at N = 1100 with 16 replicas
 /// (2 10^5) and N = 16,700 with one (spinning), keeping bench/thread_rule.sh's measured gains
-/// (1.4x at N = 1600 with 16, 1.9x at N = 2 10^4 with one). RankOneForce::gathers_per_evaluation
-/// reports the difference (negative) so that step_work counts its rows at this weight.
+/// (1.4x at N = 1600 with 16, 1.9x at N = 2 10^4 with one). RankOneForce::row_work gives it.
 inline constexpr std::int64_t k_rank_one_row_work = 12;
 
-/// The rule's work of one step on this rank: (gathers + k_row_work x rows) x replica lanes.
-std::int64_t step_work(std::int64_t gathers, std::int64_t rows, std::int64_t lanes);
+/// The rule's work of one step on this rank: (gathers + row_work x rows) x replica lanes.
+std::int64_t step_work(std::int64_t gathers, std::int64_t rows, std::int64_t lanes,
+                       std::int64_t row_work = k_row_work);
 
 /// floor(work / work per thread of `policy`) threads, at least 1 and at most `available` (>= 1).
 int default_threads(std::int64_t work, int available,

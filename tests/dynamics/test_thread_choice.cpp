@@ -45,7 +45,7 @@ TEST_CASE("The default thread count follows the work per step and the wait polic
   // N = 2 10^4 with one, two when spinning (1.4x, 1.9x) and one when passive (0.6x, 0.65x);
   // N = 10^5, two under either policy (1.4x when passive).
   const auto rank_one = [](std::int64_t n, std::int64_t replicas) {
-    return step_work((k_rank_one_row_work - k_row_work) * n, n, replicas);
+    return step_work(0, n, replicas, k_rank_one_row_work);
   };
   CHECK(default_threads(rank_one(200, 16), 2, spinning) == 1);
   CHECK(default_threads(rank_one(400, 16), 2, spinning) == 1);
@@ -103,7 +103,8 @@ TEST_CASE("The rank-one force gives the rule its rows only, at their own weight,
   const CompleteGraph graph = CompleteGraph::make(300, false);
   const DistributedNetwork d(graph);
   RankOneForce force(complete_graph_structure(graph), d.first_row(), d.local_size());
-  CHECK(force.gathers_per_evaluation() == (k_rank_one_row_work - k_row_work) * 300);
+  CHECK(force.gathers_per_evaluation() == 0);
+  CHECK(force.row_work() == k_rank_one_row_work);
   SimulationParameters p = test::short_run();
   p.K = {1.0};  // K lambda / N = 1: the all-to-all HMF's scale
   p.replicas = {{6.0, 1.0, 11}, {6.0, 1.0, 12}, {6.0, 1.0, 13}};
