@@ -30,7 +30,7 @@ set_target_properties(hmfnet PROPERTIES INSTALL_RPATH "$ORIGIN/${_hmfnet_bin_to_
 
 install(TARGETS hmfnet RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS hmfnet_library hmfnet_dynamics hmfnet_analysis hmfnet_parallel hmfnet_core
-                hmfnet_version_info hmfnet_warnings hmfnet_commands hmfnet_cli_options
+                hmfnet_version_info hmfnet_warnings hmfnet_commands hmfnet_cli_options hmfnet_app
         EXPORT hmfnetTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})

@@ -18,6 +18,7 @@ import warnings as _warnings
 import numpy as _np
 
 from . import _hmfnet
+from ._arguments import request as _request
 from ._arguments import tokens as _tokens
 from ._hmfnet import ConvergenceError, InputError, Network, SimulationBlowUp
 from .run_file import read_run
@@ -128,20 +129,22 @@ def simulate(network, *, seed, K=None, K_over_Kc=None, K_sweep=None, sigma0=None
              restart_each_K=False, K_across_replicas=False, record_stride=None,
              energy_tolerance=None):
     """`hmfnet simulate --json` with the same options (defaults as the CLI: sigma0 0.35,
-    omega 6, h 0.01, T 1000, transient 500, leapfrog). Returns its dict; the per-K fields
+    omega 6, h 0.01, T 1000, transient 500, leapfrog), set on a typed request and checked by the
+    request's own validation (the CLI's messages); threads=0 is the thread rule's count, as
+    leaving it out. Returns its dict; the per-K fields
     (K, K_over_Kc, R_mean, R_sem, energy_rel_error_max, momentum_drift) also as numpy arrays,
     R_mean_replicas / R_sem_replicas as [K x replicas] arrays, and ``timeseries`` with t, K
     [records] and R, energy, momentum [records x replicas]. ``output`` writes the CLI's results
     file (read it with read_run). The GIL is released while it integrates; Ctrl-C stops the run
     at the next record and raises KeyboardInterrupt (with ``checkpoint``, resumable)."""
-    out = _hmfnet._simulate(network, _tokens(
-        "simulate", seed=seed, K=K, K_over_Kc=K_over_Kc, K_sweep=K_sweep, sigma0=sigma0,
-        omega=omega, momenta=momenta, h=h, T=T, transient=transient, replicas=replicas,
-        threads=threads, integrator=integrator, precision=precision, force=force, output=output,
-        checkpoint=checkpoint, resume=resume, node_data=node_data, rotor_node=rotor_node,
-        phase_bins=phase_bins, restart_each_K=restart_each_K,
-        K_across_replicas=K_across_replicas, record_stride=record_stride,
-        energy_tolerance=energy_tolerance))
+    out = _hmfnet._simulate(network, _request(
+        "simulate", _hmfnet.SimulateRequest(), seed=seed, K=K, K_over_Kc=K_over_Kc,
+        K_sweep=K_sweep, sigma0=sigma0, omega=omega, momenta=momenta, h=h, T=T,
+        transient=transient, replicas=replicas, threads=threads, integrator=integrator,
+        precision=precision, force=force, output=output, checkpoint=checkpoint, resume=resume,
+        node_data=node_data, rotor_node=rotor_node, phase_bins=phase_bins,
+        restart_each_K=restart_each_K, K_across_replicas=K_across_replicas,
+        record_stride=record_stride, energy_tolerance=energy_tolerance))
     points = out.get("points", [])
     out.update(_per_K_arrays(points, ["K", "K_over_Kc", "R_mean", "R_sem", "energy_rel_error_max",
                                       "momentum_drift", "R_mean_replicas", "R_sem_replicas"]))

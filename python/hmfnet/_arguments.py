@@ -1,12 +1,15 @@
-"""Keyword arguments to the CLI's tokens: ``K_over_Kc=[1, 2]`` -> ``--K-over-Kc 1,2``; True
-flags -> ``--flag``; None, and False for a flag, -> nothing (the CLI's default). Floats are
-written with repr, which reads back to the same double.
+"""Keyword arguments to a typed request (``request``: simulate's fields are set by name, and the
+request's own check refuses values out of range) or to the CLI's tokens (``tokens``: the commands
+that still parse the CLI's grammar; ``K_over_Kc=[1, 2]`` -> ``--K-over-Kc 1,2``; True flags ->
+``--flag``; None, and False for a flag, -> nothing (the CLI's default); floats are written with
+repr, which reads back to the same double).
 
 A bool is a number to Python (True == 1) but not to the CLI: only the options that the CLI
 declares with add_flag (src/cli/command_options.cpp) take one; any other keyword given a bool
 raises TypeError, so that ``T=False`` does not silently mean the default T and ``seed=True``
 does not become a garbled command line."""
 import numbers
+import os
 
 import numpy as np
 
@@ -62,3 +65,29 @@ def tokens(where, **options):
         else:
             out += [option, _text(value)]
     return out
+
+
+def request(where, target, **options):
+    """Sets each option given (not None) on the typed request ``target``, with the bool rules of
+    ``tokens``; a value of the wrong type raises TypeError naming the keyword."""
+    for name, value in options.items():
+        if value is None:
+            continue
+        if name in FLAGS:
+            _flag(where, name, value)
+            setattr(target, name, bool(value))
+            continue
+        if _is_bool(value):
+            raise _not_a_bool(where, name, value)
+        if isinstance(value, (list, tuple, np.ndarray)):
+            if any(_is_bool(v) for v in value):
+                raise _not_a_bool(where, name, value)
+            value = [float(v) for v in value]
+        elif isinstance(value, os.PathLike):
+            value = os.fspath(value)
+        try:
+            setattr(target, name, value)
+        except TypeError:
+            kind = "a string" if name in WORDS else "a number"
+            raise TypeError(f"{where}: {name}={value!r}: {name} takes {kind}") from None
+    return target

@@ -202,79 +202,64 @@ void add_theory_options(CLI::App& app, TheoryFlags& f, const Run& run) {
   });
 }
 
+// The grammar only: the values' ranges are the request's own check (app::validate, the first
+// thing the command does), so the command line and Python refuse a value with the same words.
 void add_simulate_options(CLI::App& app, SimulateFlags& f, const Run& run) {
+  app::SimulateRequest& r = f.request;
   auto* c = app.add_subcommand("simulate",
                                "Integrate the HMF rotors on a network over a schedule of K "
                                "(the paper's protocol: each K continues from the current state)");
-  c->add_option("input", f.input, "Network file (.mtx, .h5, edge list)")->required();
-  c->add_option("--sigma0", f.sigma0, "Standard deviation of the initial momenta (default 0.35)")
-      ->check(k_positive);
-  c->add_option("--omega", f.omega, "Mean of the initial momenta (default 6)")->check(k_finite);
-  c->add_option("--momenta", f.momenta,
+  c->add_option("input", r.input, "Network file (.mtx, .h5, edge list)")->required();
+  c->add_option("--sigma0", r.sigma0, "Standard deviation of the initial momenta (default 0.35)");
+  c->add_option("--omega", r.omega, "Mean of the initial momenta (default 6)");
+  c->add_option("--momenta", r.momenta,
                 "Initial momenta: gaussian (the paper) or waterbag (uniform on omega +- "
-                "sqrt(3) sigma0); K_c is that distribution's linear threshold")
-      ->check(CLI::IsMember({"gaussian", "waterbag"}));
-  auto* k = c->add_option("--K", f.K, "Couplings, comma separated")
-                ->delimiter(',')
-                ->check(k_non_negative);
-  auto* kr = c->add_option("--K-over-Kc", f.K_over_Kc,
+                "sqrt(3) sigma0); K_c is that distribution's linear threshold");
+  auto* k = c->add_option("--K", r.K, "Couplings, comma separated")->delimiter(',');
+  auto* kr = c->add_option("--K-over-Kc", r.K_over_Kc,
                            "Couplings as multiples of K_c = 2 sigma0^2 N / lambda (Gaussian), "
                            "6 sigma0^2 N / lambda (water-bag)")
-                 ->delimiter(',')
-                 ->check(k_non_negative);
-  auto* ks = c->add_option("--K-sweep", f.sweep, "START:STOP:STEP (the paper's sweep)");
+                 ->delimiter(',');
+  auto* ks = c->add_option("--K-sweep", r.sweep, "START:STOP:STEP (the paper's sweep)");
   k->excludes(kr)->excludes(ks);
   kr->excludes(ks);
-  c->add_option("--h", f.h, "Time step (default 0.01)")->check(k_positive);
-  c->add_option("--T", f.T, "Time per K, T2 (default 1000)")->check(k_positive);
-  c->add_option("--transient", f.transient, "Discarded start of each K, T1 (default 500)")
-      ->check(k_non_negative);
-  c->add_option("--seed", f.seed, "Random seed of the initial state")->required()->check(k_seed);
-  c->add_option("--replicas", f.replicas, "Independent replicas (seeds seed..seed+B-1)")
-      ->check(CLI::Range(1, 64));
-  c->add_option(
-       "--threads", f.threads,
-       "OpenMP threads per rank (default: as the work per step pays for, at most the cores "
-       "shared by the ranks)")
+  c->add_option("--h", r.h, "Time step (default 0.01)");
+  c->add_option("--T", r.T, "Time per K, T2 (default 1000)");
+  c->add_option("--transient", r.transient, "Discarded start of each K, T1 (default 500)");
+  c->add_option("--seed", r.seed, "Random seed of the initial state")->required()->check(k_seed);
+  c->add_option("--replicas", r.replicas, "Independent replicas (seeds seed..seed+B-1, B <= 64)");
+  // The request's 0 means "the thread rule's count"; on the command line that is the option left
+  // out, so a typed 0 is refused here.
+  c->add_option("--threads", r.threads,
+                "OpenMP threads per rank (default: as the work per step pays for, at most the "
+                "cores shared by the ranks)")
       ->check(CLI::Range(1, 1024));
-  c->add_option("-o,--output", f.output, "Results file (HDF5)");
-  c->add_option("--checkpoint", f.checkpoint, "Checkpoint file, written every few seconds");
-  c->add_flag("--resume", f.resume, "Continue from --checkpoint if it exists");
+  c->add_option("-o,--output", r.output, "Results file (HDF5)");
+  c->add_option("--checkpoint", r.checkpoint, "Checkpoint file, written every few seconds");
+  c->add_flag("--resume", r.resume, "Continue from --checkpoint if it exists");
   c->add_flag("--json", f.json, "One JSON object on stdout");
   c->add_flag("--quiet", f.quiet, "No progress line");
-  c->add_flag("--node-data", f.node_data,
+  c->add_flag("--node-data", r.node_data,
               "Per node and K: <R_n>_t, Omega_n, r_n, the fluctuation terms, the psi_n - psi_1 "
               "histogram and one rotor's (theta_bar, p_bar) samples (docs/simulation_output.md)");
-  c->add_option("--rotor-node", f.rotor_node, "--node-data: the rotor sampled (default 0)")
-      ->check(k_non_negative);
-  c->add_option("--phase-bins", f.phase_bins, "--node-data: histogram bins (default 72)")
-      ->check(CLI::Range(1, 100000));
-  c->add_flag("--restart-each-K", f.restart_each_K, "Each K starts from the initial state");
-  c->add_flag("--K-across-replicas", f.K_across_replicas,
+  c->add_option("--rotor-node", r.rotor_node, "--node-data: the rotor sampled (default 0)");
+  c->add_option("--phase-bins", r.phase_bins, "--node-data: histogram bins (default 72)");
+  c->add_flag("--restart-each-K", r.restart_each_K, "Each K starts from the initial state");
+  c->add_flag("--K-across-replicas", r.K_across_replicas,
               "Run every K at once as replicas of one pass (implies --restart-each-K; same "
               "results, one pass over the network per step for all K; K values x replicas <= 64)");
-  c->add_option("--record-stride", f.record_stride, "Steps between time-series records")
-      ->check(CLI::Range(1, 1000000000));
-  c->add_option("--energy-tolerance", f.energy_tolerance,
-                "Stop when the relative energy error exceeds this (default 1e-2)")
-      ->check(k_positive);
-  c->add_option("--integrator", f.integrator,
+  c->add_option("--record-stride", r.record_stride, "Steps between time-series records");
+  c->add_option("--energy-tolerance", r.energy_tolerance,
+                "Stop when the relative energy error exceeds this (default 1e-2)");
+  c->add_option("--integrator", r.integrator,
                 "leapfrog (default; the paper's), yoshida4, blanes_moan (4th-order symplectic), "
                 "rk4 (non-symplectic contrast)");
-  c->add_option("--force", f.force, "auto (rank-one fast path when A = a a^T), sparse, rank-one")
-      ->check(CLI::IsMember({"auto", "sparse", "rank-one"}));
-  c->add_option("--precision", f.precision,
+  c->add_option("--force", r.force, "auto (rank-one fast path when A = a a^T), sparse, rank-one");
+  c->add_option("--precision", r.precision,
                 "Sparse force kernel: float64 (default) or float32 (storage and accumulation of "
-                "the gathered cos/sin; docs/choosing_a_method.md)")
-      ->check(CLI::IsMember({"float64", "float32"}));
+                "the gathered cos/sin; docs/choosing_a_method.md)");
   f.read.add_to(c);
-  c->callback([&f, run] {
-    if (f.K.empty() && f.K_over_Kc.empty() && f.sweep.empty()) {
-      throw CLI::RequiredError("one of --K, --K-over-Kc or --K-sweep");
-    }
-    if (f.resume && f.checkpoint.empty()) throw CLI::RequiredError("--checkpoint with --resume");
-    run();
-  });
+  c->callback(run);
 }
 
 void add_demo_options(CLI::App& app, DemoFlags& f, const Run& run) {

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "app/simulate_request.hpp"
 #include "cli/read_flags.hpp"
 
 namespace hmfnet::cli {
@@ -95,25 +96,11 @@ struct TheoryFlags {
   ReadFlags read;
 };
 
+/// `simulate`: the typed request (app/simulate_request.hpp) and what only the command line has
+/// (how to read the file, how to print).
 struct SimulateFlags {
-  std::string input;
-  double sigma0 = 0.35;
-  double omega = 6.0;
-  std::vector<double> K, K_over_Kc;
-  std::string sweep;
-  double h = 0.01, T = 1000.0, transient = 500.0;
-  std::uint64_t seed = 0;
-  int replicas = 1;
-  int threads = 0;
-  std::string output, checkpoint, force = "auto", integrator = "leapfrog";
-  std::string precision = "float64";
-  std::string momenta = "gaussian";
-  bool resume = false, json = false, quiet = false, node_data = false, restart_each_K = false,
-       K_across_replicas = false;
-  int record_stride = 100;
-  double energy_tolerance = 1e-2;
-  int rotor_node = 0;
-  int phase_bins = 72;
+  app::SimulateRequest request;
+  bool json = false, quiet = false;
   ReadFlags read;
 };
 

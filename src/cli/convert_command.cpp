@@ -11,9 +11,9 @@
 #include <nlohmann/json.hpp>
 #include <numeric>
 
+#include "app/provenance.hpp"
 #include "cli/command_options.hpp"
 #include "cli/commands.hpp"
-#include "cli/provenance.hpp"
 #include "cli/read_flags.hpp"
 #include "core/atomic_file.hpp"
 #include "core/distinct_files.hpp"
@@ -120,7 +120,7 @@ void run(const ConvertFlags& f) {
   } else if (order != NodeOrder::original) {
     original_index = order_and_renumber(rows.block, order, parameters);
   }
-  const std::string record = provenance("convert", parameters);
+  const std::string record = app::provenance("convert", parameters);
   std::uint64_t nnz = 0;
   if (rows.complete) {
     ParallelSession::agree([&] {

@@ -15,10 +15,10 @@
 #include <string>
 #include <utility>
 
+#include "app/provenance.hpp"
 #include "cli/command_options.hpp"
 #include "cli/command_reports.hpp"
 #include "cli/commands.hpp"
-#include "cli/provenance.hpp"
 #include "cli/validators.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
@@ -160,7 +160,7 @@ Generation generation(const ErFlags& f) {
   const double q = f.q >= 0.0 ? f.q : erdos_renyi_probability(f.n, f.mean_degree);
   const ErdosRenyiParameters params{f.n, q, f.seed};
   return {erdos_renyi_source(params), [params] { return erdos_renyi(params); },
-          provenance("generate er", {{"n", f.n}, {"q", q}, {"seed", f.seed}}),
+          app::provenance("generate er", {{"n", f.n}, {"q", q}, {"seed", f.seed}}),
           empty_draw_refusal(f.q >= 0.0 ? "--q" : "--mean-degree", f.n, f.seed)};
 }
 
@@ -174,7 +174,8 @@ Generation generation(const SfFlags& f) {
   nlohmann::json p = {
       {"n", f.n}, {"alpha", f.alpha}, {"d_min", d_min}, {"link", f.link}, {"seed", f.seed}};
   p["cutoff"] = std::isinf(f.cutoff) ? nlohmann::json("none") : nlohmann::json(f.cutoff);
-  return {source, [source] { return network_from_source(*source); }, provenance("generate sf", p),
+  return {source, [source] { return network_from_source(*source); },
+          app::provenance("generate sf", p),
           empty_draw_refusal(f.d_min > 0.0 ? "--dmin" : "--mean-degree", f.n, f.seed)};
 }
 
@@ -182,10 +183,11 @@ Generation generation(const SbmFlags& f) {
   require_edges_possible(f);
   std::shared_ptr<const EdgeSource> source =
       two_block_sbm_source({f.half, f.p_in, f.p_out, f.seed});
-  return {source, [source] { return network_from_source(*source); },
-          provenance("generate sbm",
-                     {{"half", f.half}, {"p_in", f.p_in}, {"p_out", f.p_out}, {"seed", f.seed}}),
-          empty_draw_refusal("--p-in, --p-out", 2 * f.half, f.seed)};
+  return {
+      source, [source] { return network_from_source(*source); },
+      app::provenance("generate sbm",
+                      {{"half", f.half}, {"p_in", f.p_in}, {"p_out", f.p_out}, {"seed", f.seed}}),
+      empty_draw_refusal("--p-in, --p-out", 2 * f.half, f.seed)};
 }
 
 // d >= 1 gives n d / 2 edges exactly: a regular draw is never empty.
@@ -193,7 +195,7 @@ Generation generation(const RegularFlags& f) {
   require_edges_possible(f);
   const RandomRegularParameters params{f.n, f.degree, f.seed};
   return {random_regular_source(params), [params] { return random_regular(params); },
-          provenance("generate regular", {{"n", f.n}, {"degree", f.degree}, {"seed", f.seed}}),
+          app::provenance("generate regular", {{"n", f.n}, {"degree", f.degree}, {"seed", f.seed}}),
           empty_draw_refusal("--degree", f.n, f.seed)};
 }
 
@@ -213,7 +215,7 @@ void run_complete(const CompleteFlags& f) {
   if (is_root()) {
     write_complete_graph(
         f.output, graph,
-        provenance("generate complete", {{"n", f.n}, {"self_loops", f.self_loops}}));
+        app::provenance("generate complete", {{"n", f.n}, {"self_loops", f.self_loops}}));
     std::cerr << "wrote " << f.output << ": the complete graph, N = " << graph.n
               << ", edges = " << graph.edges() << " (stored implicitly)\n";
   }

@@ -3,6 +3,7 @@
 #include <exception>
 #include <iostream>
 
+#include "app/provenance.hpp"
 #include "cli/command_options.hpp"
 #include "cli/commands.hpp"
 #include "core/error.hpp"
@@ -49,7 +50,7 @@ int main(int argc, char** argv) {
   // run() reports the command's own errors; this catches what escapes before it (MPI start-up,
   // allocation), which would otherwise end the process in std::terminate with no message.
   try {
-    hmfnet::cli::set_command_line(argc, argv);
+    hmfnet::app::set_command_line(argc, argv);
     hmfnet::ParallelSession session(&argc, &argv);
     return run(argc, argv);
   } catch (const std::exception& e) {

@@ -1,9 +1,9 @@
 // `hmfnet rewire`: degree-preserving rewiring to a target rho (Fig. PLcorr).
 #include <iostream>
 
+#include "app/provenance.hpp"
 #include "cli/command_options.hpp"
 #include "cli/commands.hpp"
-#include "cli/provenance.hpp"
 #include "cli/read_flags.hpp"
 #include "cli/validators.hpp"
 #include "core/atomic_file.hpp"
@@ -23,13 +23,13 @@ void run(const RewireFlags& f) {
   const RewiringResult r = rewire_to_correlation(net, {f.target_rho, f.seed, f.max_attempts});
   if (!is_root()) return;
   write_network(f.output, r.network,
-                provenance("rewire", {{"input", f.input},
-                                      {"target_rho", f.target_rho},
-                                      {"seed", f.seed},
-                                      {"initial_rho", r.initial_rho},
-                                      {"final_rho", r.final_rho},
-                                      {"attempts", r.attempts},
-                                      {"swaps", r.swaps}}));
+                app::provenance("rewire", {{"input", f.input},
+                                           {"target_rho", f.target_rho},
+                                           {"seed", f.seed},
+                                           {"initial_rho", r.initial_rho},
+                                           {"final_rho", r.final_rho},
+                                           {"attempts", r.attempts},
+                                           {"swaps", r.swaps}}));
   std::cerr << "wrote " << f.output << ": rho " << r.initial_rho << " -> " << r.final_rho << " ("
             << r.swaps << " swaps in " << r.attempts << " attempts; degrees unchanged)\n";
 }

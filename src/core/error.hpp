@@ -27,6 +27,9 @@ class InputError : public std::runtime_error {
 class ParameterError : public std::invalid_argument {
  public:
   ParameterError(const std::string& name, const std::string& cause, const std::string& allowed);
+  /// A message already in the one-line form (a request's check that keeps the CLI grammar's
+  /// wording, app/option_checks.hpp).
+  explicit ParameterError(const std::string& message) : std::invalid_argument(message) {}
 };
 
 /// x as a message shows it: at most 6 significant digits ("0.01", "1e+300"), never the hundreds of

@@ -6,7 +6,7 @@
 
 #include <memory>
 
-#include "cli/commands.hpp"
+#include "app/provenance.hpp"
 #include "core/error.hpp"
 #include "dynamics/interrupt.hpp"
 #include "dynamics/simulation.hpp"
@@ -26,7 +26,7 @@ void start_session() {
   static char* argv_storage[] = {name, nullptr};
   static char** argv = argv_storage;
   g_session = std::make_unique<hmfnet::ParallelSession>(&argc, &argv);
-  hmfnet::cli::set_command_line("python: hmfnet module");
+  hmfnet::app::set_command_line("python: hmfnet module");
 }
 
 // ParameterError (a std::invalid_argument) becomes ValueError by pybind11's own rule; a parameter

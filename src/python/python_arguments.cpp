@@ -66,12 +66,6 @@ void parse_arguments(cli::TheoryFlags& f, const std::string& input,
         command_tokens("theory", input, tokens));
 }
 
-void parse_arguments(cli::SimulateFlags& f, const std::string& input,
-                     const std::vector<std::string>& tokens) {
-  parse([&](CLI::App& app) { add_simulate_options(app, f, k_no_work); },
-        command_tokens("simulate", input, tokens));
-}
-
 void parse_generate_arguments(cli::ErFlags& f, const std::vector<std::string>& tokens) {
   parse_generator(&cli::GenerateFlags::er, "er", f, tokens);
 }

@@ -16,8 +16,6 @@ void parse_arguments(cli::SpectrumFlags& f, const std::string& input,
                      const std::vector<std::string>& tokens);
 void parse_arguments(cli::TheoryFlags& f, const std::string& input,
                      const std::vector<std::string>& tokens);
-void parse_arguments(cli::SimulateFlags& f, const std::string& input,
-                     const std::vector<std::string>& tokens);
 /// `generate er|sf|sbm|regular` (the grammar's required --output is given a placeholder: nothing is
 /// written).
 void parse_generate_arguments(cli::ErFlags& f, const std::vector<std::string>& tokens);

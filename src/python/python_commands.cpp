@@ -1,6 +1,7 @@
-// The commands on a Python network: the same functions the CLI runs (cli/command_reports.hpp),
-// so the numbers equal the CLI's on the same network and parameters; the report comes back as
-// the dict that `--json` prints, and `simulate` adds its time series as numpy arrays.
+// The commands on a Python network: the same functions the CLI runs, so the numbers equal the
+// CLI's on the same network and parameters. `simulate` takes its typed request and returns its
+// outcome's fields (the ones `--json` prints) with the time series as numpy arrays;
+// `spectrum` and `theory` return the dict that `--json` prints (cli/command_reports.hpp).
 #include "python/python_commands.hpp"
 
 #include <omp.h>
@@ -13,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "app/simulate_service.hpp"
 #include "cli/command_reports.hpp"
 #include "core/error.hpp"
 #include "dynamics/interrupt.hpp"
@@ -121,25 +123,77 @@ py::object theory(const PythonNetwork& net, const std::vector<std::string>& toke
   return to_python(report.json);
 }
 
-py::object simulate(const PythonNetwork& net, const std::vector<std::string>& tokens) {
-  cli::SimulateFlags f;
-  parse_arguments(f, net.source, tokens);
-  f.quiet = true;  // no progress line on a notebook's stderr
-  const cli::SimulateReport run = [&] {
+// A visited field as a Python value under its name (app/simulate_service.hpp's lists).
+struct DictFields {
+  py::dict& out;
+  template <class T>
+  void field(const char* name, const T& value) {
+    out[name] = value;
+  }
+};
+
+py::dict simulate(const PythonNetwork& net, app::SimulateRequest request) {
+  request.input = net.source;
+  request.progress = false;  // no progress line on a notebook's stderr
+  const app::SimulateOutcome o = [&] {
     py::gil_scoped_release release;
     const std::lock_guard<std::mutex> lock(g_command_mutex);
     const ScopedThreadCount threads;
     ScopedInterruptHandler handler;
-    cli::SimulateHooks hooks;
-    cli::prepare_simulate(f);
+    app::SimulateHooks hooks;
+    app::prepare_simulate(request);
     hooks.before_integration = [&handler] { handler.install(); };
-    return cli::simulate_report(f, net.distributed(), hooks);
+    return app::simulate(request, net.distributed(), hooks);
   }();
-  py::dict out = to_python(run.report.json);
-  SeriesArrays series{{}, run.result.series.t.size()};
-  visit_series_fields(series, run.result.series);
+  py::dict out;
+  DictFields fields{out};
+  app::visit_report_fields(fields, o);
+  if (!o.points.empty()) {
+    py::list points;
+    for (const app::PointSummary& p : o.points) {
+      py::dict point;
+      DictFields point_fields{point};
+      app::visit_summary_fields(point_fields, p);
+      points.append(point);
+    }
+    out["points"] = points;
+  }
+  SeriesArrays series{{}, o.result.series.t.size()};
+  visit_series_fields(series, o.result.series);
   out["timeseries"] = series.arrays;
-  return std::move(out);
+  return out;
+}
+
+// The request with every field settable by name; Python's simulate() sets the keyword arguments
+// it was given (python/hmfnet/_arguments.py refuses bools where a number is meant).
+void bind_simulate_request(py::module_& m) {
+  py::class_<app::SimulateRequest>(m, "SimulateRequest")
+      .def(py::init<>())
+      .def_readwrite("sigma0", &app::SimulateRequest::sigma0)
+      .def_readwrite("omega", &app::SimulateRequest::omega)
+      .def_readwrite("momenta", &app::SimulateRequest::momenta)
+      .def_readwrite("K", &app::SimulateRequest::K)
+      .def_readwrite("K_over_Kc", &app::SimulateRequest::K_over_Kc)
+      .def_readwrite("K_sweep", &app::SimulateRequest::sweep)
+      .def_readwrite("h", &app::SimulateRequest::h)
+      .def_readwrite("T", &app::SimulateRequest::T)
+      .def_readwrite("transient", &app::SimulateRequest::transient)
+      .def_readwrite("seed", &app::SimulateRequest::seed)
+      .def_readwrite("replicas", &app::SimulateRequest::replicas)
+      .def_readwrite("threads", &app::SimulateRequest::threads)
+      .def_readwrite("output", &app::SimulateRequest::output)
+      .def_readwrite("checkpoint", &app::SimulateRequest::checkpoint)
+      .def_readwrite("force", &app::SimulateRequest::force)
+      .def_readwrite("integrator", &app::SimulateRequest::integrator)
+      .def_readwrite("precision", &app::SimulateRequest::precision)
+      .def_readwrite("resume", &app::SimulateRequest::resume)
+      .def_readwrite("node_data", &app::SimulateRequest::node_data)
+      .def_readwrite("restart_each_K", &app::SimulateRequest::restart_each_K)
+      .def_readwrite("K_across_replicas", &app::SimulateRequest::K_across_replicas)
+      .def_readwrite("record_stride", &app::SimulateRequest::record_stride)
+      .def_readwrite("energy_tolerance", &app::SimulateRequest::energy_tolerance)
+      .def_readwrite("rotor_node", &app::SimulateRequest::rotor_node)
+      .def_readwrite("phase_bins", &app::SimulateRequest::phase_bins);
 }
 
 }  // namespace
@@ -147,7 +201,8 @@ py::object simulate(const PythonNetwork& net, const std::vector<std::string>& to
 void bind_commands(py::module_& m) {
   m.def("_spectrum", &spectrum, py::arg("network"), py::arg("tokens"));
   m.def("_theory", &theory, py::arg("network"), py::arg("tokens"));
-  m.def("_simulate", &simulate, py::arg("network"), py::arg("tokens"));
+  bind_simulate_request(m);
+  m.def("_simulate", &simulate, py::arg("network"), py::arg("request"));
 }
 
 }  // namespace hmfnet::python

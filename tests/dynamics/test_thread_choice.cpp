@@ -110,5 +110,7 @@ TEST_CASE("The rank-one force gives the rule its rows only, at their own weight,
   p.replicas = {{6.0, 1.0, 11}, {6.0, 1.0, 12}, {6.0, 1.0, 13}};
   const SimulationResult r =
       simulate(d, std::vector<double>(std::size_t{300}, graph.degree()), force, p);
-  CHECK(r.thread_rule_work == k_rank_one_row_work * 300 * 3);
+  // This rank's rows (150 each on 2 ranks) at the rank-one weight, for 3 replicas.
+  CHECK(r.thread_rule_work ==
+        step_work(0, static_cast<std::int64_t>(d.local_size()), 3, k_rank_one_row_work));
 }

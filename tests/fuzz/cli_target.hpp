@@ -80,25 +80,15 @@ inline void check_regular(const cli::RegularFlags& f, const std::string& line) {
   c.require(f.degree >= 0, "--degree < 0");
 }
 
+// The grammar holds the types, the seed's text, --threads' count and the K options that exclude
+// each other; the ranges of the values are the request's own check (app::validate, the command's
+// first step: tests/app/test_simulate_request.cpp).
 inline void check_simulate(const cli::SimulateFlags& f, const std::string& line) {
   const RangeChecks c(line);
-  c.positive(f.sigma0, "--sigma0 not > 0");
-  c.require(std::isfinite(f.omega), "--omega not finite");
-  for (double k : f.K) c.non_negative(k, "--K not >= 0");
-  for (double k : f.K_over_Kc) c.non_negative(k, "--K-over-Kc not >= 0");
-  c.require(!f.K.empty() || !f.K_over_Kc.empty() || !f.sweep.empty(), "no couplings");
-  c.positive(f.h, "--h not > 0");
-  c.positive(f.T, "--T not > 0");
-  c.non_negative(f.transient, "--transient not >= 0");
-  c.require(f.replicas >= 1 && f.replicas <= 64, "--replicas outside 1..64");
-  c.require(f.threads == 0 || (f.threads >= 1 && f.threads <= 1024), "--threads outside 1..1024");
-  c.require(f.rotor_node >= 0, "--rotor-node < 0");
-  c.require(f.phase_bins >= 1 && f.phase_bins <= 100000, "--phase-bins outside 1..100000");
-  c.require(f.record_stride >= 1, "--record-stride < 1");
-  c.positive(f.energy_tolerance, "--energy-tolerance not > 0");
-  c.require(!f.resume || !f.checkpoint.empty(), "--resume without --checkpoint");
-  c.require(f.force == "auto" || f.force == "sparse" || f.force == "rank-one", "--force");
-  c.require(f.precision == "float64" || f.precision == "float32", "--precision");
+  const app::SimulateRequest& r = f.request;
+  c.require(r.threads == 0 || (r.threads >= 1 && r.threads <= 1024), "--threads outside 1..1024");
+  c.require(int(!r.K.empty()) + int(!r.K_over_Kc.empty()) + int(!r.sweep.empty()) <= 1,
+            "--K, --K-over-Kc and --K-sweep together");
   c.read_flags(f.read);
 }
 

@@ -1,5 +1,5 @@
 """spectrum, theory and simulate from Python against the CLI on the same network file and
-parameters: the same code path (cli/command_reports.hpp), so the numbers must agree to
+parameters: the same code path (src/app for simulate, cli/command_reports.hpp for the others), so the numbers must agree to
 round-off (the network reaches the CLI through a file, rebuilt row by row: same matrix, same
 order of operations; 1e-12 relative leaves room for nothing but that)."""
 import networkx as nx
@@ -65,6 +65,16 @@ def test_simulate_equals_the_cli(karate, run_cli, tmp_path):
         for key in b[group]:
             np.testing.assert_array_equal(a[group][key], b[group][key], err_msg=key)
     np.testing.assert_array_equal(a["timeseries"]["R"], series["R"])
+    # One list of fields each (app/simulate_service.hpp, dynamics/point_result.hpp): the dict has
+    # every key of the CLI's JSON with its value, each point every key of the CLI's points, and
+    # the time series every dataset of the results file's.
+    assert set(cli) <= set(py)
+    for key in cli:
+        if key not in ("points", "integration_seconds", "nnz_steps_per_second",
+                       "peak_rss_mb_per_rank"):
+            assert py[key] == cli[key], key
+    assert [set(p) for p in py["points"]] == [set(p) for p in cli["points"]]
+    assert set(series) == set(b["timeseries"])
 
 
 def test_read_run_round_trips_the_cli_file(karate, run_cli, tmp_path):

@@ -1,0 +1,57 @@
+#include "app/option_checks.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "core/error.hpp"
+
+namespace hmfnet::app {
+
+namespace {
+
+// NaN fails every comparison, so each `ok` is written as "inside the range": NaN is refused.
+void require_number(bool ok, const char* option, double x, const char* allowed) {
+  if (ok) return;
+  throw ParameterError(option, "value " + shortest_text(x) + " is not allowed", allowed);
+}
+
+}  // namespace
+
+std::string shortest_text(double x) {
+  char text[32];
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, x);
+    if (!std::isfinite(x) || std::strtod(text, nullptr) == x) break;
+  }
+  return text;
+}
+
+void require_positive(const char* option, double x) {
+  require_number(x > 0.0 && x < HUGE_VAL, option, x, "> 0");
+}
+
+void require_non_negative(const char* option, double x) {
+  require_number(x >= 0.0 && x < HUGE_VAL, option, x, ">= 0");
+}
+
+void require_finite(const char* option, double x) {
+  require_number(std::isfinite(x), option, x, "finite");
+}
+
+void require_in_range(const char* option, std::int64_t x, std::int64_t lo, std::int64_t hi) {
+  if (x >= lo && x <= hi) return;
+  throw ParameterError(std::string(option) + ": Value " + std::to_string(x) + " not in range " +
+                       std::to_string(lo) + " to " + std::to_string(hi));
+}
+
+void require_member(const char* option, const std::string& word,
+                    std::initializer_list<const char*> allowed) {
+  std::string set;
+  for (const char* a : allowed) {
+    if (word == a) return;
+    set += (set.empty() ? "" : ",") + std::string(a);
+  }
+  throw ParameterError(std::string(option) + ": " + word + " not in {" + set + "}");
+}
+
+}  // namespace hmfnet::app
