@@ -4,8 +4,8 @@ The C++ library behind the `hmfnet` command line, for Python. A network comes fr
 networkx, a file or a generator; `spectrum`, `theory` and `simulate` run the same code as the
 CLI's subcommands and return what `--json` prints, as a dict (per-K fields and time series as
 numpy arrays). Parameters are the CLI's options as keyword arguments (``K_over_Kc=[1.5, 2]`` is
-``--K-over-Kc 1.5,2``), checked by the CLI's own grammar: a value out of range raises ValueError
-with the CLI's message, naming the option and its range.
+``--K-over-Kc 1.5,2``), checked by the same checks as the command line: a value out of range
+raises ValueError with the CLI's message, naming the option and its range.
 
     import networkx as nx, hmfnet
     net = hmfnet.Network.from_networkx(nx.karate_club_graph())
@@ -137,6 +137,8 @@ def simulate(network, *, seed, K=None, K_over_Kc=None, K_sweep=None, sigma0=None
     [records] and R, energy, momentum [records x replicas]. ``output`` writes the CLI's results
     file (read it with read_run). The GIL is released while it integrates; Ctrl-C stops the run
     at the next record and raises KeyboardInterrupt (with ``checkpoint``, resumable)."""
+    if seed is None:
+        raise ValueError("--seed is required (an integer 0 <= seed < 2^64)")
     out = _hmfnet._simulate(network, _request(
         "simulate", _hmfnet.SimulateRequest(), seed=seed, K=K, K_over_Kc=K_over_Kc,
         K_sweep=K_sweep, sigma0=sigma0, omega=omega, momenta=momenta, h=h, T=T,

@@ -17,6 +17,9 @@ import numpy as np
 FLAGS = frozenset({"symmetrize", "self_loops", "resume", "node_data", "restart_each_K",
                    "K_across_replicas"})
 
+# Options that take a list of numbers (one number is a list of one).
+LISTS = frozenset({"K", "K_over_Kc"})
+
 # Options whose value is a word or a path (the rest take numbers), for the TypeError's wording.
 WORDS = frozenset({"momenta", "lambda2", "K_sweep", "output", "checkpoint", "integrator", "force",
                    "precision", "link"})
@@ -43,6 +46,13 @@ def _flag(where, name, value):
     if not _is_bool(value):
         raise TypeError(f"{where}: {name}={value!r}: {name} is a flag (it takes True or False)")
     return ["--" + name.replace("_", "-")] if value else []
+
+
+def _check_seed(value):
+    # The CLI's seed check (src/cli/validators.hpp: k_seed), with its words.
+    if not isinstance(value, numbers.Integral) or not 0 <= int(value) < 2**64:
+        raise ValueError(f"--seed: value {value} is not allowed "
+                         "(allowed: an integer 0 <= seed < 2^64)")
 
 
 def tokens(where, **options):
@@ -79,10 +89,14 @@ def request(where, target, **options):
             continue
         if _is_bool(value):
             raise _not_a_bool(where, name, value)
+        if name == "seed":
+            _check_seed(value)
         if isinstance(value, (list, tuple, np.ndarray)):
             if any(_is_bool(v) for v in value):
                 raise _not_a_bool(where, name, value)
             value = [float(v) for v in value]
+        elif isinstance(value, numbers.Real) and name in LISTS:
+            value = [float(value)]  # one K, as --K 1.5 is
         elif isinstance(value, os.PathLike):
             value = os.fspath(value)
         try:

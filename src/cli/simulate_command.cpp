@@ -11,6 +11,7 @@
 #include "cli/command_options.hpp"
 #include "cli/commands.hpp"
 #include "cli/read_flags.hpp"
+#include "core/error.hpp"
 #include "dynamics/interrupt.hpp"
 
 namespace hmfnet::cli {
@@ -56,6 +57,13 @@ std::string report_text(const app::SimulateOutcome& o) {
 void run(SimulateFlags& f) {
   app::SimulateHooks hooks;
   f.request.progress = !f.quiet && !f.json && ::isatty(2);
+  // A value out of range is a command-line error like any the grammar finds: the same one line
+  // ending in "(see --help)" and exit code 2 (main.cpp), from the request's own check.
+  try {
+    app::validate(f.request);
+  } catch (const ParameterError& e) {
+    throw CLI::ValidationError(e.what());
+  }
   app::prepare_simulate(f.request);
   const DistributedInput input = f.read.read_distributed(f.request.input);
   hooks.before_integration = install_interrupt_handlers;

@@ -4,8 +4,11 @@
 
 namespace hmfnet {
 
-void ProgressLine::start(std::int64_t steps_done) {
+void ProgressLine::start(std::int64_t steps_done, double K) {
   m_steps_at_start = steps_done;
+  // What the last line shows when no record follows (a run resumed at its very end).
+  m_done = static_cast<double>(steps_done);
+  m_K = K;
   m_start = std::chrono::steady_clock::now();
 }
 

@@ -12,8 +12,8 @@ class ProgressLine : public RunObserver {
  public:
   /// `enabled`: params.progress on the root rank; `total_steps`: every K's steps.
   ProgressLine(bool enabled, double total_steps) : m_enabled(enabled), m_total(total_steps) {}
-  /// The stepping loop starts now (a resumed run counts its rate from here).
-  void start(std::int64_t steps_done);
+  /// The stepping loop starts now at coupling K (a resumed run counts its rate from here).
+  void start(std::int64_t steps_done, double K);
   void on_record(const RunRecord& r) override;
   /// The last record's line again, ending with a newline.
   void finish() const { show(true); }

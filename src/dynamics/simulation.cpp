@@ -421,7 +421,7 @@ SimulationResult Run::execute() {
   }
   m_loop_start = Clock::now();
   m_checkpoints.restart();
-  m_progress.start(m_result.steps);
+  m_progress.start(m_result.steps, segment_K(m_k_start).front());
   std::int64_t session_steps = 0;
   for (int k = m_k_start; k < static_cast<int>(m_params.K.size()); ++k) {
     m_k = k;

@@ -5,8 +5,9 @@
 // An input is a command line: arguments separated by newlines ("simulate\nnet.mtx\n--K\n1").
 // Contract under test: parsing either throws a CLI11 error (a parse error, --help, --version), or
 // hmfnet::ParameterError from a check across options, or reaches the subcommand's work with every
-// value inside the range its option states. The work itself is replaced by those range checks (no
-// network is read and nothing is run). Anything else -- another exception, a sanitizer report,
+// value inside the range its option states (simulate: the grammar's part only, see
+// check_simulate). The work itself is replaced by those range checks (no network is read and
+// nothing is run). Anything else -- another exception, a sanitizer report,
 // a value out of range that reached the work -- aborts with a message.
 #include <cmath>
 #include <cstdint>
@@ -80,9 +81,10 @@ inline void check_regular(const cli::RegularFlags& f, const std::string& line) {
   c.require(f.degree >= 0, "--degree < 0");
 }
 
-// The grammar holds the types, the seed's text, --threads' count and the K options that exclude
-// each other; the ranges of the values are the request's own check (app::validate, the command's
-// first step: tests/app/test_simulate_request.cpp).
+// simulate's grammar holds the types, the seed's text, --threads' count and the K options that
+// exclude each other, and no more: the ranges of its values are the request's own check
+// (app::validate, the command's first step), which needs the library this fuzz build leaves out;
+// tests/app/test_simulate_request.cpp refuses each range's edge in the CLI's words instead.
 inline void check_simulate(const cli::SimulateFlags& f, const std::string& line) {
   const RangeChecks c(line);
   const app::SimulateRequest& r = f.request;

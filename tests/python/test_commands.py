@@ -110,6 +110,11 @@ def test_read_run_round_trips_the_cli_file(karate, run_cli, tmp_path):
     (lambda n: hmfnet.simulate(n, seed=1, K=[1], integrator="euler"), "euler"),
     (lambda n: hmfnet.simulate(n, seed=1, K_sweep="1:0:1"), "--K-sweep"),
     (lambda n: hmfnet.simulate(n, seed=1, K=[1], resume=True), "--checkpoint"),
+    (lambda n: hmfnet.simulate(n, seed=None, K=[1]), "--seed is required"),
+    (lambda n: hmfnet.simulate(n, seed=-1, K=[1]), "--seed: value -1 is not allowed"),
+    (lambda n: hmfnet.simulate(n, seed=2**64, K=[1]), "--seed: value 18446744073709551616"),
+    (lambda n: hmfnet.simulate(n, seed=1, K=[1], force="dense"),
+     "--force: dense not in \\{auto,sparse,rank-one\\}"),
 ])
 def test_parameters_out_of_range_raise_value_error(karate, call, message):
     with pytest.raises(ValueError, match=message):
@@ -145,6 +150,12 @@ def test_a_step_that_blows_up_raises(karate):
 def test_a_bool_is_refused_where_a_number_or_string_is_needed(karate, call, message):
     with pytest.raises(TypeError, match=message):
         call(karate[0])
+
+
+def test_one_coupling_may_be_a_number_as_on_the_command_line(karate):
+    one = hmfnet.simulate(karate[0], seed=1, K=np.float64(1.5), T=1, transient=0, threads=1)
+    listed = hmfnet.simulate(karate[0], seed=1, K=[1.5], T=1, transient=0, threads=1)
+    np.testing.assert_array_equal(one["R_mean"], listed["R_mean"])
 
 
 def test_flags_take_bools_python_or_numpy(karate, tmp_path):
