@@ -60,11 +60,10 @@ void run(SimulateFlags& f) {
   // A value out of range is a command-line error like any the grammar finds: the same one line
   // ending in "(see --help)" and exit code 2 (main.cpp), from the request's own check.
   try {
-    app::validate(f.request);
+    app::prepare_simulate(f.request);  // validate(f.request) first
   } catch (const ParameterError& e) {
     throw CLI::ValidationError(e.what());
   }
-  app::prepare_simulate(f.request);
   const DistributedInput input = f.read.read_distributed(f.request.input);
   hooks.before_integration = install_interrupt_handlers;
   const app::SimulateOutcome o = app::simulate(f.request, input, hooks);

@@ -26,6 +26,8 @@
 #include "support/small_networks.hpp"
 
 using namespace hmfnet;
+using hmfnet::test::checkpointed_run;
+using hmfnet::test::remove_on_root;
 using hmfnet::test::short_run;
 using hmfnet::test::temp_path;
 
@@ -47,31 +49,20 @@ void corrupt_theta(const std::string& path) {
   H5Fclose(file);
 }
 
-void remove_on_root(const std::string& path) {
-  ParallelSession::max(0.0);
-  if (ParallelSession::rank() == 0) std::filesystem::remove(path);
-  ParallelSession::max(0.0);
-}
-
 }  // namespace
 
 TEST_CASE("A checkpoint changed on disk is refused by its checksum [ER N=200]", "[checkpoint]") {
   const Network net = erdos_renyi({200, 0.05, 6});
   const DistributedNetwork d(net);
   NetworkForce force(d);
-  SimulationParameters p = short_run();
-  p.checkpoint_path = temp_path("hmfnet_test_corrupt_checkpoint");
-  remove_on_root(p.checkpoint_path);
-  p.checkpoint_seconds = 0.0;
-  p.stop_after_steps = 50;
-  simulate(d, net.degrees(), force, p);
+  SimulationParameters p =
+      checkpointed_run(d, net.degrees(), force, "hmfnet_test_corrupt_checkpoint", 50);
   ParallelSession::max(0.0);
   REQUIRE_NOTHROW(read_checkpoint(p.checkpoint_path));  // intact: accepted
   ParallelSession::max(0.0);  // every rank has closed it before the root changes it
   if (ParallelSession::rank() == 0) corrupt_theta(p.checkpoint_path);
   ParallelSession::max(0.0);
   REQUIRE_THROWS_WITH(read_checkpoint(p.checkpoint_path), Catch::Contains("checksum mismatch"));
-  p.stop_after_steps = 0;
   p.resume = true;
   REQUIRE_THROWS_AS(simulate(d, net.degrees(), force, p), InputError);
   remove_on_root(p.checkpoint_path);
@@ -186,13 +177,8 @@ TEST_CASE("A resume on a changed network, force or parameter is refused naming i
   const Network net = erdos_renyi({200, 0.05, 6});
   const DistributedNetwork d(net);
   NetworkForce force(d);
-  SimulationParameters p = short_run();
-  p.checkpoint_path = temp_path("hmfnet_test_foreign_resume");
-  remove_on_root(p.checkpoint_path);
-  p.checkpoint_seconds = 0.0;
-  p.stop_after_steps = 50;
-  simulate(d, net.degrees(), force, p);
-  p.stop_after_steps = 0;
+  SimulationParameters p =
+      checkpointed_run(d, net.degrees(), force, "hmfnet_test_foreign_resume", 50);
   p.resume = true;
   const auto refused = [&](const Network& other, CouplingForce& f, const SimulationParameters& q,
                            const std::string& field) {

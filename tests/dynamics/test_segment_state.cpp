@@ -19,6 +19,7 @@
 
 using namespace hmfnet;
 using hmfnet::test::member_count;
+using hmfnet::test::remove_on_root;
 using hmfnet::test::temp_path;
 
 namespace {
@@ -112,12 +113,6 @@ void require_same(const CheckpointRecord& a, const CheckpointRecord& b) {
     REQUIRE(a.arrays[k].columns == b.arrays[k].columns);
     REQUIRE(a.arrays[k].values == b.arrays[k].values);
   }
-}
-
-void remove_on_root(const std::string& path) {
-  ParallelSession::max(0.0);
-  if (ParallelSession::rank() == 0) std::filesystem::remove(path);
-  ParallelSession::max(0.0);
 }
 
 }  // namespace
