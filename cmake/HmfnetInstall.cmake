@@ -5,7 +5,7 @@
 #                                      module (lib/python3/dist-packages/hmfnet, Debian's layout)
 #   pip install . (P on CMAKE_PREFIX_PATH) the Python module again, built for the interpreter
 #                                      running pip against P (python/CMakeLists.txt): it links
-#                                      hmfnet::hmfnet_commands, the CLI's command layer
+#                                      hmfnet::hmfnet_app, the application layer (src/app)
 #   cd build && cpack -G DEB           a Debian package of the same, runtime dependencies from
 #                                      dpkg-shlibdeps (dpkg-dev)
 # A C++ consumer writes find_package(hmfnet) and links hmfnet::hmfnet (tests/install/consumer).
@@ -31,10 +31,11 @@ set_target_properties(hmfnet PROPERTIES INSTALL_RPATH "$ORIGIN/${_hmfnet_bin_to_
 install(TARGETS hmfnet RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS hmfnet_library hmfnet_dynamics hmfnet_analysis hmfnet_parallel hmfnet_core
                 hmfnet_version_info hmfnet_warnings hmfnet_commands hmfnet_cli_options hmfnet_app
+                hmfnet_app_requests
         EXPORT hmfnetTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-# The library's headers and those of the command layer (src/cli) that the Python module calls;
+# The library's headers, the application layer's (src/app) that the Python module calls among them;
 # src/python is the module itself, built from a checkout.
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/src/
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/hmfnet

@@ -19,7 +19,6 @@ import numpy as _np
 
 from . import _hmfnet
 from ._arguments import request as _request
-from ._arguments import tokens as _tokens
 from ._hmfnet import ConvergenceError, InputError, Network, SimulationBlowUp
 from .run_file import read_run
 from . import generate
@@ -94,8 +93,9 @@ Network.to_scipy = _to_scipy
 def read_network(path, symmetrize=False, index_base=0, nodes=0):
     """Reads a network file (.h5, .mtx, edge list) as the CLI does (FILE:LINE errors raise
     InputError); the options are the CLI's --symmetrize, --index-base and --nodes."""
-    return _warn(_hmfnet._read_network(str(path), _tokens(
-        "read_network", symmetrize=symmetrize, index_base=index_base, nodes=nodes)))
+    return _warn(_hmfnet._read_network(str(path), _request(
+        "read_network", _hmfnet.ReadRequest(), symmetrize=symmetrize, index_base=index_base,
+        nodes=nodes)))
 
 
 def _per_K_arrays(points, fields):
@@ -105,8 +105,9 @@ def _per_K_arrays(points, fields):
 def spectrum(network, sigma0=None, tolerance=None, lambda2=None):
     """`hmfnet spectrum --json`: lambda, the Perron vector's summaries, rho, G, lambda_2 or its
     bounds, structure, warnings, and K_c when sigma0 is given."""
-    return _hmfnet._spectrum(network, _tokens("spectrum", sigma0=sigma0, tolerance=tolerance,
-                                              lambda2=lambda2))
+    return _hmfnet._spectrum(network, _request("spectrum", _hmfnet.SpectrumRequest(),
+                                               sigma0=sigma0, tolerance=tolerance,
+                                               lambda2=lambda2))
 
 
 def theory(network, sigma0, K=None, K_over_Kc=None, momenta=None, tolerance=None):
@@ -115,8 +116,11 @@ def theory(network, sigma0, K=None, K_over_Kc=None, momenta=None, tolerance=None
     fields (K, K_over_Kc, R, R_onset, sigma2, status, linearly_stable, iterations, residual) are
     also returned as numpy arrays at the top level; raises ConvergenceError naming every K
     whose solve failed."""
-    out = _hmfnet._theory(network, _tokens("theory", sigma0=sigma0, K=K, K_over_Kc=K_over_Kc,
-                                           momenta=momenta, tolerance=tolerance))
+    out = _hmfnet._theory(network, _request("theory", _hmfnet.TheoryRequest(), sigma0=sigma0, K=K,
+                                            K_over_Kc=K_over_Kc, momenta=momenta,
+                                            tolerance=tolerance))
+    for w in out.pop("warnings"):
+        _warnings.warn(w, stacklevel=2)
     out.update(_per_K_arrays(out["points"], ["K", "K_over_Kc", "R", "R_onset", "sigma2", "status",
                                              "linearly_stable", "iterations", "residual"]))
     return out

@@ -1,13 +1,11 @@
-"""Keyword arguments to a typed request (``request``: simulate's fields are set by name, and the
-request's own check refuses values out of range) or to the CLI's tokens (``tokens``: the commands
-that still parse the CLI's grammar; ``K_over_Kc=[1, 2]`` -> ``--K-over-Kc 1,2``; True flags ->
-``--flag``; None, and False for a flag, -> nothing (the CLI's default); floats are written with
-repr, which reads back to the same double).
+"""Keyword arguments to a typed request (src/app): each keyword given (not None) sets the request's
+field of that name, and the request's own check (its C++ validate) refuses values out of range
+with the CLI's words. None leaves the CLI's default.
 
 A bool is a number to Python (True == 1) but not to the CLI: only the options that the CLI
 declares with add_flag (src/cli/command_options.cpp) take one; any other keyword given a bool
 raises TypeError, so that ``T=False`` does not silently mean the default T and ``seed=True``
-does not become a garbled command line."""
+does not become seed 1."""
 import numbers
 import os
 
@@ -34,52 +32,22 @@ def _not_a_bool(where, name, shown):
     return TypeError(f"{where}: {name}={shown!r}: a bool is not {kind} ({name} takes {kind})")
 
 
-def _text(value):
-    if isinstance(value, numbers.Integral):
-        return str(int(value))
-    if isinstance(value, numbers.Real):
-        return repr(float(value))
-    return str(value)
-
-
 def _flag(where, name, value):
     if not _is_bool(value):
         raise TypeError(f"{where}: {name}={value!r}: {name} is a flag (it takes True or False)")
-    return ["--" + name.replace("_", "-")] if value else []
 
 
 def _check_seed(value):
-    # The CLI's seed check (src/cli/validators.hpp: k_seed), with its words.
+    # The CLI's seed check (src/cli/seed_check.hpp: k_seed), with its words.
     if not isinstance(value, numbers.Integral) or not 0 <= int(value) < 2**64:
         raise ValueError(f"--seed: value {value} is not allowed "
                          "(allowed: an integer 0 <= seed < 2^64)")
 
 
-def tokens(where, **options):
-    """The tokens of ``options`` for the CLI's grammar; ``where`` (the calling function's name)
-    starts every TypeError's message."""
-    out = []
-    for name, value in options.items():
-        if value is None:
-            continue
-        if name in FLAGS:
-            out += _flag(where, name, value)
-            continue
-        option = "--" + name.replace("_", "-")
-        if _is_bool(value):
-            raise _not_a_bool(where, name, value)
-        if isinstance(value, (list, tuple, np.ndarray)):
-            if any(_is_bool(v) for v in value):
-                raise _not_a_bool(where, name, value)
-            out += [option, ",".join(_text(v) for v in value)]
-        else:
-            out += [option, _text(value)]
-    return out
-
-
 def request(where, target, **options):
-    """Sets each option given (not None) on the typed request ``target``, with the bool rules of
-    ``tokens``; a value of the wrong type raises TypeError naming the keyword."""
+    """Sets each option given (not None) on the typed request ``target`` (``where``, the calling
+    function's name, starts every TypeError's message); a value of the wrong type raises
+    TypeError naming the keyword."""
     for name, value in options.items():
         if value is None:
             continue

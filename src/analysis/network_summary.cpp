@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/json_fields.hpp"
 #include "parallel/distributed_structure.hpp"
 #include "parallel/parallel_session.hpp"
 #include "theory/critical_coupling.hpp"
@@ -163,44 +164,8 @@ NetworkSummary summarise(const CompleteGraph& graph, double sigma0) {
 
 std::string to_json(const NetworkSummary& s) {
   nlohmann::json j;
-  j["n"] = s.n;
-  j["edges"] = s.edges;
-  j["nnz"] = s.nnz;
-  j["self_loops"] = s.self_loops;
-  j["weighted"] = s.weighted;
-  j["mean_degree"] = s.mean_degree;
-  j["max_degree"] = s.max_degree;
-  j["lambda"] = s.lambda;
-  j["lambda_residual"] = s.lambda_residual;
-  j["rho"] = s.rho;
-  j["G"] = s.G;
-  j["components"] = s.components;
-  j["largest_component"] = s.largest_component;
-  j["bipartite"] = s.bipartite;
-  j["perron_nonnegative"] = s.perron_nonnegative;
-  if (std::isfinite(s.lambda2)) {
-    j["lambda2"] = s.lambda2;
-    if (std::isfinite(s.second_mode_ratio)) j["second_mode_ratio"] = s.second_mode_ratio;
-    if (std::isfinite(s.eigenvector_error_bound))
-      j["eigenvector_error_bound"] = s.eigenvector_error_bound;
-  } else if (std::isfinite(s.lambda2_lower)) {
-    // An upper bound not yet finite (eps_k >= 1) is written as null.
-    j["lambda2_bounds"] = {s.lambda2_lower, std::isfinite(s.lambda2_upper)
-                                                ? nlohmann::json(s.lambda2_upper)
-                                                : nlohmann::json(nullptr)};
-    j["lambda2_bound_failure_probability"] = s.lambda2_bound_failure;
-    j["lambda2_bound_steps"] = s.lambda2_bound_steps;
-    if (std::isfinite(s.second_mode_ratio)) j["second_mode_ratio_at_least"] = s.second_mode_ratio;
-    if (std::isfinite(s.eigenvector_error_bound))
-      j["eigenvector_error_bound"] = s.eigenvector_error_bound;
-  }
-  j["eigensolver_iterations"] = s.eigen_iterations;
-  j["eigensolver_seconds"] = s.eigen_seconds;
-  if (s.sigma0 > 0.0) {
-    j["sigma0"] = s.sigma0;
-    j["Kc"] = s.Kc;
-  }
-  j["warnings"] = s.warnings;
+  JsonFields fields{j};
+  visit_network_summary_fields(fields, s);
   return j.dump();
 }
 

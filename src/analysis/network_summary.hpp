@@ -2,6 +2,7 @@
 // Everything `hmfnet spectrum` reports about a network: sizes, degrees, rho (eq:rhodef),
 // structure (components, bipartiteness), lambda and its residual, G (eq:globalOrderRInDeltaK),
 // and K_c (eq:criticalKFirstOrder) when sigma0 is given.
+#include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
@@ -69,7 +70,51 @@ NetworkSummary summarise(const DistributedNetwork& network, const PerronResult& 
 /// graph's).
 NetworkSummary summarise(const CompleteGraph& graph, double sigma0 = 0.0);
 
-/// One JSON object (the CLI's `spectrum --json` output).
+/// The summary's fields under the names `spectrum --json` gives them, one list for the CLI's JSON
+/// and Python's dict: `v.field(name, value)` for each. lambda_2 is given converged or as bounds,
+/// whichever was found; an upper bound not yet finite stays infinite (JSON writes it as null).
+template <class Visitor>
+void visit_network_summary_fields(Visitor& v, const NetworkSummary& s) {
+  v.field("n", s.n);
+  v.field("edges", s.edges);
+  v.field("nnz", s.nnz);
+  v.field("self_loops", s.self_loops);
+  v.field("weighted", s.weighted);
+  v.field("mean_degree", s.mean_degree);
+  v.field("max_degree", s.max_degree);
+  v.field("lambda", s.lambda);
+  v.field("lambda_residual", s.lambda_residual);
+  v.field("rho", s.rho);
+  v.field("G", s.G);
+  v.field("components", s.components);
+  v.field("largest_component", s.largest_component);
+  v.field("bipartite", s.bipartite);
+  v.field("perron_nonnegative", s.perron_nonnegative);
+  if (std::isfinite(s.lambda2)) {
+    v.field("lambda2", s.lambda2);
+    if (std::isfinite(s.second_mode_ratio)) v.field("second_mode_ratio", s.second_mode_ratio);
+  } else if (std::isfinite(s.lambda2_lower)) {
+    v.field("lambda2_bounds", std::vector<double>{s.lambda2_lower, s.lambda2_upper});
+    v.field("lambda2_bound_failure_probability", s.lambda2_bound_failure);
+    v.field("lambda2_bound_steps", s.lambda2_bound_steps);
+    if (std::isfinite(s.second_mode_ratio)) {
+      v.field("second_mode_ratio_at_least", s.second_mode_ratio);
+    }
+  }
+  if ((std::isfinite(s.lambda2) || std::isfinite(s.lambda2_lower)) &&
+      std::isfinite(s.eigenvector_error_bound)) {
+    v.field("eigenvector_error_bound", s.eigenvector_error_bound);
+  }
+  v.field("eigensolver_iterations", s.eigen_iterations);
+  v.field("eigensolver_seconds", s.eigen_seconds);
+  if (s.sigma0 > 0.0) {
+    v.field("sigma0", s.sigma0);
+    v.field("Kc", s.Kc);
+  }
+  v.field("warnings", s.warnings);
+}
+
+/// One JSON object (visit_network_summary_fields).
 std::string to_json(const NetworkSummary& summary);
 
 }  // namespace hmfnet

@@ -38,6 +38,24 @@ void require_finite(const char* option, double x) {
   require_number(std::isfinite(x), option, x, "finite");
 }
 
+void require_closed_range(const char* option, double x, double lo, double hi) {
+  const std::string allowed = shortest_text(lo) + " <= x <= " + shortest_text(hi);
+  require_number(x >= lo && x <= hi, option, x, allowed.c_str());
+}
+
+void require_greater_than(const char* option, double x, double lo) {
+  const std::string allowed = "> " + shortest_text(lo);
+  require_number(x > lo && x < HUGE_VAL, option, x, allowed.c_str());
+}
+
+void require_probability(const char* option, double x) {
+  require_number(x >= 0.0 && x <= 1.0, option, x, "0 <= q <= 1");
+}
+
+void require_positive_or_inf(const char* option, double x) {
+  require_number(x > 0.0, option, x, "> 0, or inf");
+}
+
 void require_in_range(const char* option, std::int64_t x, std::int64_t lo, std::int64_t hi) {
   if (x >= lo && x <= hi) return;
   throw ParameterError(std::string(option) + ": Value " + std::to_string(x) + " not in range " +
@@ -52,6 +70,19 @@ void require_member(const char* option, const std::string& word,
     set += (set.empty() ? "" : ",") + std::string(a);
   }
   throw ParameterError(std::string(option) + ": " + word + " not in {" + set + "}");
+}
+
+void require_member(const char* option, int x, std::initializer_list<int> allowed) {
+  std::string set;
+  for (const int a : allowed) {
+    if (x == a) return;
+    set += (set.empty() ? "" : ",") + std::to_string(a);
+  }
+  throw ParameterError(std::string(option) + ": " + std::to_string(x) + " not in {" + set + "}");
+}
+
+void require_not_both(const char* option, bool given, const char* other, bool other_given) {
+  if (given && other_given) throw ParameterError(std::string(option) + " excludes " + other);
 }
 
 }  // namespace hmfnet::app

@@ -21,10 +21,22 @@ void require_positive(const char* option, double x);
 void require_non_negative(const char* option, double x);
 /// x finite.
 void require_finite(const char* option, double x);
+/// lo <= x <= hi for a real option with two finite ends (tolerances).
+void require_closed_range(const char* option, double x, double lo, double hi);
+/// x > lo and finite (the power-law exponent alpha > 2).
+void require_greater_than(const char* option, double x, double lo);
+/// 0 <= x <= 1.
+void require_probability(const char* option, double x);
+/// x > 0; infinity allowed (a bound that may be absent).
+void require_positive_or_inf(const char* option, double x);
 /// lo <= x <= hi for an integer option.
 void require_in_range(const char* option, std::int64_t x, std::int64_t lo, std::int64_t hi);
 /// `word` one of `allowed`.
 void require_member(const char* option, const std::string& word,
                     std::initializer_list<const char*> allowed);
+/// `x` one of `allowed`, for an integer option ("--index-base: 2 not in {0,1}").
+void require_member(const char* option, int x, std::initializer_list<int> allowed);
+/// At most one of options that exclude each other given ("--q excludes --mean-degree").
+void require_not_both(const char* option, bool given, const char* other, bool other_given);
 
 }  // namespace hmfnet::app

@@ -3,96 +3,51 @@
 // that involve several options, with no work attached. Each add_*_options registers a subcommand
 // whose callback, once its options parse, calls `run` with the flags filled in. The commands
 // (cli/*_command.cpp) pass their work; the CLI argument fuzzer (tests/fuzz/fuzz_cli_arguments)
-// passes nothing, so the grammar is tested without MPI, Trilinos or a network.
+// passes nothing, so the grammar is tested without MPI, Trilinos or a network. The ranges of a
+// typed request's values are its own check (src/app: validate), run by the subcommand's callback
+// before its work, so the command line and Python refuse a value with the same words; a refusal
+// there is a command-line error like any the grammar finds ("(see --help)", exit code 2).
 #include <CLI/CLI.hpp>
 #include <cstdint>
 #include <functional>
-#include <limits>
 #include <string>
 #include <vector>
 
+#include "app/convert_request.hpp"
+#include "app/generate_requests.hpp"
+#include "app/rewire_request.hpp"
 #include "app/simulate_request.hpp"
+#include "app/spectrum_request.hpp"
+#include "app/theory_request.hpp"
 #include "cli/read_flags.hpp"
 
 namespace hmfnet::cli {
 
 using Run = std::function<void()>;
 
-struct ErFlags {
-  int n = 0;
-  double q = -1.0;
-  double mean_degree = -1.0;
-  std::uint64_t seed = 0;
-  std::string output;
-};
-
-struct CompleteFlags {
-  std::int64_t n = 0;
-  bool self_loops = false;
-  std::string output;
-};
-
-struct SfFlags {
-  int n = 0;
-  double alpha = 0.0;
-  double d_min = -1.0;
-  double mean_degree = -1.0;
-  double cutoff = std::numeric_limits<double>::infinity();
-  std::string link = "capped";
-  std::uint64_t seed = 0;
-  std::string output;
-};
-
-struct SbmFlags {
-  int half = 0;
-  double p_in = 0.0;
-  double p_out = 0.0;
-  std::uint64_t seed = 0;
-  std::string output;
-};
-
-struct RegularFlags {
-  int n = 0;
-  int degree = 0;
-  std::uint64_t seed = 0;
-  std::string output;
-};
-
+/// `rewire`: the typed request (app/rewire_request.hpp) and how to read its input.
 struct RewireFlags {
-  std::string input;
-  double target_rho = 0.0;
-  std::uint64_t seed = 0;
-  std::int64_t max_attempts = 0;
-  std::string output;
+  app::RewireRequest request;
   ReadFlags read;
 };
 
+/// `convert`: the typed request (app/convert_request.hpp) and how to read its input.
 struct ConvertFlags {
-  std::string input;
-  std::string output;
-  int partition = 0;
-  std::uint64_t seed = 1;
-  std::string order = "original";
+  app::ConvertRequest request;
   ReadFlags read;
 };
 
+/// `spectrum`: the typed request (app/spectrum_request.hpp) and what only the command line has.
 struct SpectrumFlags {
-  std::string input;
+  app::SpectrumRequest request;
   bool json = false;
-  double sigma0 = 0.0;
-  double tolerance = 1e-10;
-  std::string lambda2 = "auto";
   ReadFlags read;
 };
 
+/// `theory`: the typed request (app/theory_request.hpp) and what only the command line has.
 struct TheoryFlags {
-  std::string input;
-  double sigma0 = 0.0;
-  std::string momenta = "gaussian";
-  std::vector<double> K;
-  std::vector<double> K_over_Kc;
+  app::TheoryRequest request;
   bool json = false;
-  double tolerance = 1e-10;
   ReadFlags read;
 };
 
@@ -112,12 +67,13 @@ struct DemoFlags {
 /// The top-level app: version flag, one subcommand required, one-line errors.
 void configure_app(CLI::App& app);
 
+/// `generate er|sf|sbm|complete|regular`: the typed requests (app/generate_requests.hpp).
 struct GenerateFlags {
-  ErFlags er;
-  SfFlags sf;
-  SbmFlags sbm;
-  CompleteFlags complete;
-  RegularFlags regular;
+  app::ErRequest er;
+  app::SfRequest sf;
+  app::SbmRequest sbm;
+  app::CompleteRequest complete;
+  app::RegularRequest regular;
 };
 struct GenerateRuns {
   Run er, sf, sbm, complete, regular;

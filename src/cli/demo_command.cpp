@@ -10,7 +10,6 @@
 #include "analysis/network_summary.hpp"
 #include "cli/command_options.hpp"
 #include "cli/commands.hpp"
-#include "cli/validators.hpp"
 #include "dynamics/network_force.hpp"
 #include "dynamics/simulation.hpp"
 #include "network/chung_lu.hpp"

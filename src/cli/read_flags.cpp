@@ -3,7 +3,6 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
-#include "cli/validators.hpp"
 #include "io/network_file.hpp"
 
 namespace hmfnet::cli {
@@ -16,34 +15,27 @@ void print_warnings(const std::vector<std::string>& warnings) {
 }  // namespace
 
 // ReadFlags::add_to is part of the grammar: cli/command_options.cpp.
-ReadOptions ReadFlags::options() const {
-  ReadOptions o;
-  o.asymmetry = symmetrize ? AsymmetryPolicy::symmetrize : AsymmetryPolicy::reject;
-  o.edge_list_base = index_base;
-  o.edge_list_nodes = nodes;
-  return o;
-}
 
 Network ReadFlags::read(const std::string& path) const {
-  ReadResult r = read_network(path, options());
+  ReadResult r = read_network(path, app::read_options(*this));
   print_warnings(r.warnings);
   return std::move(r.network);
 }
 
 NetworkInput ReadFlags::read_input(const std::string& path) const {
-  NetworkInput r = read_network_input(path, options());
+  NetworkInput r = read_network_input(path, app::read_options(*this));
   print_warnings(r.warnings);
   return r;
 }
 
 DistributedInput ReadFlags::read_distributed(const std::string& path) const {
-  DistributedInput r = read_distributed_input(path, options());
+  DistributedInput r = read_distributed_input(path, app::read_options(*this));
   print_warnings(r.warnings);
   return r;
 }
 
 DistributedRows ReadFlags::read_distributed_rows(const std::string& path) const {
-  DistributedRows r = hmfnet::read_distributed_rows(path, options());
+  DistributedRows r = hmfnet::read_distributed_rows(path, app::read_options(*this));
   print_warnings(r.warnings);
   return r;
 }

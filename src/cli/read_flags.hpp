@@ -1,20 +1,18 @@
 #pragma once
-// Options every command that reads a network file shares, and the read itself (warnings go to
-// stderr on the root rank).
+// Options every command that reads a network file shares (the typed request,
+// app/read_request.hpp, which Python's read_network sets too), and the read itself (warnings go
+// to stderr on the root rank).
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "app/read_request.hpp"
 #include "io/network_file.hpp"
 #include "io/read_options.hpp"
 #include "parallel/distributed_read.hpp"
 
 namespace hmfnet::cli {
 
-struct ReadFlags {
-  bool symmetrize = false;
-  int index_base = 0;
-  int nodes = 0;
-
+struct ReadFlags : app::ReadRequest {
   void add_to(CLI::App* command);
   /// The stored rows (an implicit structure is refused, naming the file).
   Network read(const std::string& path) const;
@@ -25,8 +23,6 @@ struct ReadFlags {
   DistributedInput read_distributed(const std::string& path) const;
   /// The same rows before a DistributedNetwork takes them (`convert`). Collective.
   DistributedRows read_distributed_rows(const std::string& path) const;
-  /// What the readers take from these flags.
-  ReadOptions options() const;
 };
 
 }  // namespace hmfnet::cli

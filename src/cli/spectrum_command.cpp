@@ -1,27 +1,19 @@
-// `hmfnet spectrum`: lambda, Perron vector summaries, rho, G, structure, K_c.
+// `hmfnet spectrum`: the command line's face of the spectrum service (app/spectrum_service.hpp):
+// lambda, Perron vector summaries, rho, G, structure, K_c, as text or JSON.
 #include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
-#include "analysis/network_summary.hpp"
+#include "app/spectrum_service.hpp"
 #include "cli/command_options.hpp"
-#include "cli/command_reports.hpp"
 #include "cli/commands.hpp"
 #include "cli/read_flags.hpp"
-#include "cli/validators.hpp"
-#include "parallel/distributed_network.hpp"
-#include "parallel/parallel_session.hpp"
+#include "core/json_fields.hpp"
 
 namespace hmfnet::cli {
 
 namespace {
-
-// `--lambda2 auto` converges lambda_2 up to this many stored entries and bounds it beyond:
-// converged, it took 1.8 s of eigensolver time at 4 10^6 (ER N = 4 10^4, degree 100) and 28 s at
-// 10^7 (N = 10^5), where the bounds settle the warning in a few dozen products.
-constexpr EdgeOffset k_converged_lambda2_entries = 4'000'000;
 
 void print_text(std::ostream& out, const NetworkSummary& s) {
   out << std::setprecision(8) << "nodes              " << s.n << "\n"
@@ -58,44 +50,25 @@ void print_text(std::ostream& out, const NetworkSummary& s) {
   for (const auto& w : s.warnings) out << "warning: " << w << "\n";
 }
 
-NetworkSummary summary(const SpectrumFlags& f, const DistributedInput& input) {
-  // K_N: every number has a closed form (network/complete_graph.hpp), no solve.
-  if (input.complete) return summarise(*input.complete, f.sigma0);
-  PerronOptions options;
-  options.tolerance = f.tolerance;
-  options.second_eigenvalue = true;  // the gap: near-degenerate lambda is reported
-  options.bound_lambda2_first =
-      f.lambda2 == "bound" ||
-      (f.lambda2 == "auto" && input.network->global_nnz() > k_converged_lambda2_entries);
-  const PerronResult perron = perron_eigenpair(*input.network, options);
-  return summarise(*input.network, perron, f.sigma0);
+std::string report_json(const app::SpectrumOutcome& o) {
+  nlohmann::json out;
+  JsonFields fields{out};
+  app::visit_spectrum_fields(fields, o);
+  return out.dump();
 }
 
 void run(const SpectrumFlags& f) {
-  const CommandReport report = spectrum_report(f, f.read.read_distributed(f.input));
+  const app::SpectrumOutcome o =
+      app::spectrum(f.request, f.read.read_distributed(f.request.input));
   if (!is_root()) return;
   if (f.json) {
-    std::cout << report.json << std::endl;
+    std::cout << report_json(o) << std::endl;
   } else {
-    std::cout << report.text;
+    print_text(std::cout, o.summary);
   }
 }
 
 }  // namespace
-
-CommandReport spectrum_report(const SpectrumFlags& f, const DistributedInput& input) {
-  const NetworkSummary s = summary(f, input);
-  const std::vector<double> peak_mb = ParallelSession::peak_memory_mb();  // collective
-  CommandReport report;
-  nlohmann::json j = nlohmann::json::parse(to_json(s));
-  j["ranks"] = ParallelSession::ranks();
-  j["peak_rss_mb_per_rank"] = peak_mb;
-  report.json = j.dump();
-  std::ostringstream text;
-  print_text(text, s);
-  report.text = text.str();
-  return report;
-}
 
 void add_spectrum_command(CLI::App& app) {
   static SpectrumFlags f;

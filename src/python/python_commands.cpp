@@ -1,7 +1,7 @@
-// The commands on a Python network: the same functions the CLI runs, so the numbers equal the
-// CLI's on the same network and parameters. `simulate` takes its typed request and returns its
-// outcome's fields (the ones `--json` prints) with the time series as numpy arrays;
-// `spectrum` and `theory` return the dict that `--json` prints (cli/command_reports.hpp).
+// The commands on a Python network: the services the CLI runs (src/app), so the numbers equal the
+// CLI's on the same network and parameters. Each takes its typed request (keyword arguments set
+// its fields: python/hmfnet/_arguments.py) and returns its outcome's fields under the names that
+// `--json` prints (one field list each, walked by both), the time series as numpy arrays.
 #include "python/python_commands.hpp"
 
 #include <omp.h>
@@ -15,10 +15,10 @@
 #include <vector>
 
 #include "app/simulate_service.hpp"
-#include "cli/command_reports.hpp"
+#include "app/spectrum_service.hpp"
+#include "app/theory_service.hpp"
 #include "core/error.hpp"
 #include "dynamics/interrupt.hpp"
-#include "python/python_arguments.hpp"
 #include "python/python_network.hpp"
 
 namespace py = pybind11;
@@ -26,10 +26,6 @@ namespace py = pybind11;
 namespace hmfnet::python {
 
 namespace {
-
-py::object to_python(const std::string& json) {
-  return py::module_::import("json").attr("loads")(json);
-}
 
 // records x replicas, row-major, as a 2-D array.
 py::array_t<double> matrix(const std::vector<double>& values, std::size_t rows) {
@@ -100,29 +96,6 @@ class ScopedThreadCount {
   int m_threads;
 };
 
-py::object spectrum(const PythonNetwork& net, const std::vector<std::string>& tokens) {
-  cli::SpectrumFlags f;
-  parse_arguments(f, net.source, tokens);
-  const cli::CommandReport report = [&] {
-    py::gil_scoped_release release;
-    const std::lock_guard<std::mutex> lock(g_command_mutex);
-    return cli::spectrum_report(f, net.distributed());
-  }();
-  return to_python(report.json);
-}
-
-py::object theory(const PythonNetwork& net, const std::vector<std::string>& tokens) {
-  cli::TheoryFlags f;
-  parse_arguments(f, net.source, tokens);
-  const cli::CommandReport report = [&] {
-    py::gil_scoped_release release;
-    const std::lock_guard<std::mutex> lock(g_command_mutex);
-    return cli::theory_report(f, net.distributed());
-  }();
-  if (!report.not_converged.empty()) throw ConvergenceError(report.not_converged);
-  return to_python(report.json);
-}
-
 // A visited field as a Python value under its name (app/simulate_service.hpp's lists).
 struct DictFields {
   py::dict& out;
@@ -132,19 +105,60 @@ struct DictFields {
   }
 };
 
+// The outcome of `run` on the network, computed with the GIL released and one command at a time.
+template <class Run>
+auto without_gil(const Run& run) {
+  py::gil_scoped_release release;
+  const std::lock_guard<std::mutex> lock(g_command_mutex);
+  return run();
+}
+
+py::dict spectrum(const PythonNetwork& net, app::SpectrumRequest request) {
+  request.input = net.source;
+  const app::SpectrumOutcome o =
+      without_gil([&] { return app::spectrum(request, net.distributed()); });
+  py::dict out;
+  DictFields fields{out};
+  app::visit_spectrum_fields(fields, o);
+  return out;
+}
+
+py::dict theory(const PythonNetwork& net, app::TheoryRequest request) {
+  request.input = net.source;
+  const app::TheoryOutcome o = without_gil([&] { return app::theory(request, net.distributed()); });
+  if (!o.not_converged.empty()) throw ConvergenceError(o.not_converged);
+  py::dict out;
+  DictFields fields{out};
+  app::visit_theory_fields(fields, o);
+  py::list points, gamma;
+  for (const app::TheoryPoint& p : o.points) {
+    py::dict point;
+    DictFields point_fields{point};
+    app::visit_theory_point_fields(point_fields, p);
+    points.append(point);
+    if (!app::above_threshold(p)) continue;
+    py::dict growth;
+    DictFields growth_fields{growth};
+    app::visit_growth_fields(growth_fields, p);
+    gamma.append(growth);
+  }
+  out["points"] = points;
+  out["gamma"] = gamma;
+  out["warnings"] = o.warnings;
+  return out;
+}
+
 py::dict simulate(const PythonNetwork& net, app::SimulateRequest request) {
   request.input = net.source;
   request.progress = false;  // no progress line on a notebook's stderr
-  const app::SimulateOutcome o = [&] {
-    py::gil_scoped_release release;
-    const std::lock_guard<std::mutex> lock(g_command_mutex);
+  const app::SimulateOutcome o = without_gil([&] {
     const ScopedThreadCount threads;
     ScopedInterruptHandler handler;
     app::SimulateHooks hooks;
     app::prepare_simulate(request);
     hooks.before_integration = [&handler] { handler.install(); };
     return app::simulate(request, net.distributed(), hooks);
-  }();
+  });
   py::dict out;
   DictFields fields{out};
   app::visit_report_fields(fields, o);
@@ -196,11 +210,31 @@ void bind_simulate_request(py::module_& m) {
       .def_readwrite("phase_bins", &app::SimulateRequest::phase_bins);
 }
 
+void bind_spectrum_request(py::module_& m) {
+  py::class_<app::SpectrumRequest>(m, "SpectrumRequest")
+      .def(py::init<>())
+      .def_readwrite("sigma0", &app::SpectrumRequest::sigma0)
+      .def_readwrite("tolerance", &app::SpectrumRequest::tolerance)
+      .def_readwrite("lambda2", &app::SpectrumRequest::lambda2);
+}
+
+void bind_theory_request(py::module_& m) {
+  py::class_<app::TheoryRequest>(m, "TheoryRequest")
+      .def(py::init<>())
+      .def_readwrite("sigma0", &app::TheoryRequest::sigma0)
+      .def_readwrite("momenta", &app::TheoryRequest::momenta)
+      .def_readwrite("K", &app::TheoryRequest::K)
+      .def_readwrite("K_over_Kc", &app::TheoryRequest::K_over_Kc)
+      .def_readwrite("tolerance", &app::TheoryRequest::tolerance);
+}
+
 }  // namespace
 
 void bind_commands(py::module_& m) {
-  m.def("_spectrum", &spectrum, py::arg("network"), py::arg("tokens"));
-  m.def("_theory", &theory, py::arg("network"), py::arg("tokens"));
+  bind_spectrum_request(m);
+  m.def("_spectrum", &spectrum, py::arg("network"), py::arg("request"));
+  bind_theory_request(m);
+  m.def("_theory", &theory, py::arg("network"), py::arg("request"));
   bind_simulate_request(m);
   m.def("_simulate", &simulate, py::arg("network"), py::arg("request"));
 }

@@ -12,12 +12,11 @@
 #include <utility>
 #include <vector>
 
-#include "cli/command_options.hpp"
-#include "cli/command_reports.hpp"
+#include "app/network_generation.hpp"
+#include "app/read_request.hpp"
 #include "core/error.hpp"
 #include "network/network_builder.hpp"
 #include "parallel/distributed_network.hpp"
-#include "python/python_arguments.hpp"
 
 namespace py = pybind11;
 
@@ -93,15 +92,57 @@ py::tuple csr_arrays(const Network& net) {
   return py::make_tuple(indptr, indices, data);
 }
 
-template <class Flags>
-PythonNetwork generated(const std::vector<std::string>& args, const std::string& name) {
-  Flags flags;
-  parse_generate_arguments(flags, args);
-  cli::GeneratedNetwork g = [&] {
+// The network the generator makes, whole in memory (the one the CLI writes for the same request).
+template <class Request>
+PythonNetwork generated(const Request& request, const std::string& name) {
+  app::GeneratedNetwork g = [&] {
     py::gil_scoped_release release;
-    return cli::generated_network(flags);
+    return app::generated_network(request);
   }();
   return {{std::move(g.network), {}}, "generate " + name};
+}
+
+// The generators' requests, every field settable by name (python/hmfnet/generate.py sets the
+// keyword arguments it was given).
+void bind_generate_requests(py::module_& m) {
+  py::class_<app::ErRequest>(m, "ErRequest")
+      .def(py::init<>())
+      .def_readwrite("n", &app::ErRequest::n)
+      .def_readwrite("q", &app::ErRequest::q)
+      .def_readwrite("mean_degree", &app::ErRequest::mean_degree)
+      .def_readwrite("seed", &app::ErRequest::seed);
+  py::class_<app::SfRequest>(m, "SfRequest")
+      .def(py::init<>())
+      .def_readwrite("n", &app::SfRequest::n)
+      .def_readwrite("alpha", &app::SfRequest::alpha)
+      .def_readwrite("dmin", &app::SfRequest::d_min)
+      .def_readwrite("mean_degree", &app::SfRequest::mean_degree)
+      .def_readwrite("cutoff", &app::SfRequest::cutoff)
+      .def_readwrite("link", &app::SfRequest::link)
+      .def_readwrite("seed", &app::SfRequest::seed);
+  py::class_<app::SbmRequest>(m, "SbmRequest")
+      .def(py::init<>())
+      .def_readwrite("half", &app::SbmRequest::half)
+      .def_readwrite("p_in", &app::SbmRequest::p_in)
+      .def_readwrite("p_out", &app::SbmRequest::p_out)
+      .def_readwrite("seed", &app::SbmRequest::seed);
+  py::class_<app::RegularRequest>(m, "RegularRequest")
+      .def(py::init<>())
+      .def_readwrite("n", &app::RegularRequest::n)
+      .def_readwrite("degree", &app::RegularRequest::degree)
+      .def_readwrite("seed", &app::RegularRequest::seed);
+  py::class_<app::CompleteRequest>(m, "CompleteRequest")
+      .def(py::init<>())
+      .def_readwrite("n", &app::CompleteRequest::n)
+      .def_readwrite("self_loops", &app::CompleteRequest::self_loops);
+}
+
+void bind_read_request(py::module_& m) {
+  py::class_<app::ReadRequest>(m, "ReadRequest")
+      .def(py::init<>())
+      .def_readwrite("symmetrize", &app::ReadRequest::symmetrize)
+      .def_readwrite("index_base", &app::ReadRequest::index_base)
+      .def_readwrite("nodes", &app::ReadRequest::nodes);
 }
 
 }  // namespace
@@ -160,20 +201,30 @@ void bind_network(py::module_& m) {
         return "<hmfnet.Network N=" + std::to_string(p.input.size()) + " from " + p.source + ">";
       });
 
+  bind_read_request(m);
   m.def(
       "_read_network",
-      [](const std::string& path, const std::vector<std::string>& args) {
-        cli::ReadFlags flags;
-        parse_read_arguments(flags, args);
+      [](const std::string& path, const app::ReadRequest& request) {
+        app::validate(request);
         py::gil_scoped_release release;
-        return PythonNetwork{read_network_input(path, flags.options()), path};
+        return PythonNetwork{read_network_input(path, app::read_options(request)), path};
       },
-      py::arg("path"), py::arg("args"));
-  m.def("_generate_er", &generated<cli::ErFlags>, py::arg("args"), py::arg("name") = "er");
-  m.def("_generate_sf", &generated<cli::SfFlags>, py::arg("args"), py::arg("name") = "sf");
-  m.def("_generate_sbm", &generated<cli::SbmFlags>, py::arg("args"), py::arg("name") = "sbm");
-  m.def("_generate_regular", &generated<cli::RegularFlags>, py::arg("args"),
+      py::arg("path"), py::arg("request"));
+  bind_generate_requests(m);
+  m.def("_generate_er", &generated<app::ErRequest>, py::arg("request"), py::arg("name") = "er");
+  m.def("_generate_sf", &generated<app::SfRequest>, py::arg("request"), py::arg("name") = "sf");
+  m.def("_generate_sbm", &generated<app::SbmRequest>, py::arg("request"),
+        py::arg("name") = "sbm");
+  m.def("_generate_regular", &generated<app::RegularRequest>, py::arg("request"),
         py::arg("name") = "regular");
+  m.def(
+      "_generate_complete",
+      [](const app::CompleteRequest& request) {
+        app::validate(request);
+        return PythonNetwork{{CompleteGraph::make(request.n, request.self_loops), {}},
+                             "generate complete"};
+      },
+      py::arg("request"));
 }
 
 }  // namespace hmfnet::python

@@ -1,9 +1,8 @@
 # The sources of the extension module hmfnet._hmfnet, listed once for the two builds that compile
-# it: the main build (src/CMakeLists.txt, links hmfnet_commands from its own tree) and
-# `pip install .` (python/CMakeLists.txt, links hmfnet::hmfnet_commands from an installed hmfnet).
+# it: the main build (src/CMakeLists.txt, links hmfnet_app from its own tree) and
+# `pip install .` (python/CMakeLists.txt, links hmfnet::hmfnet_app from an installed hmfnet).
 set(HMFNET_PYTHON_MODULE_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/module.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/python_arguments.cpp
   ${CMAKE_CURRENT_LIST_DIR}/python_commands.cpp
   ${CMAKE_CURRENT_LIST_DIR}/python_network.cpp
 )

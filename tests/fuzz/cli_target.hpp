@@ -5,9 +5,10 @@
 // An input is a command line: arguments separated by newlines ("simulate\nnet.mtx\n--K\n1").
 // Contract under test: parsing either throws a CLI11 error (a parse error, --help, --version), or
 // hmfnet::ParameterError from a check across options, or reaches the subcommand's work with every
-// value inside the range its option states (simulate: the grammar's part only, see
-// check_simulate). The work itself is replaced by those range checks (no network is read and
-// nothing is run). Anything else -- another exception, a sanitizer report,
+// value inside the range its option states. The ranges of the typed requests are their own checks
+// (src/app: validate), which the grammar's callbacks run before the work: these checks, written
+// apart from them, test them too (simulate: the grammar's part only, see check_simulate). The
+// work itself is replaced by those range checks (no network is read and nothing is run). Anything else -- another exception, a sanitizer report,
 // a value out of range that reached the work -- aborts with a message.
 #include <cmath>
 #include <cstdint>
@@ -46,39 +47,44 @@ class RangeChecks {
   std::string command_;
 };
 
-inline void check_er(const cli::ErFlags& f, const std::string& line) {
+inline void check_er(const app::ErRequest& f, const std::string& line) {
   const RangeChecks c(line);
-  c.require(f.n >= 1, "--n < 1");
-  c.require((f.q >= 0.0 && f.q <= 1.0) || (f.mean_degree >= 0.0 && std::isfinite(f.mean_degree)),
-            "neither a probability q nor a finite mean degree");
+  c.require(f.n >= 2, "--n < 2");
+  c.require(f.q.has_value() != f.mean_degree.has_value(), "not one of --q and --mean-degree");
+  c.require((f.q && *f.q > 0.0 && *f.q <= 1.0) ||
+                (f.mean_degree && *f.mean_degree > 0.0 && std::isfinite(*f.mean_degree)),
+            "neither a probability q > 0 nor a finite mean degree > 0");
 }
 
-inline void check_sf(const cli::SfFlags& f, const std::string& line) {
+inline void check_sf(const app::SfRequest& f, const std::string& line) {
   const RangeChecks c(line);
-  c.require(f.n >= 1, "--n < 1");
+  c.require(f.n >= 2, "--n < 2");
   c.require(f.alpha > 2.0 && std::isfinite(f.alpha), "--alpha not > 2");
-  c.require((f.d_min > 0.0 && std::isfinite(f.d_min)) ||
-                (f.mean_degree > 0.0 && std::isfinite(f.mean_degree)),
+  c.require(f.d_min.has_value() != f.mean_degree.has_value(), "not one of --dmin and --mean-degree");
+  c.require((f.d_min && *f.d_min > 0.0 && std::isfinite(*f.d_min)) ||
+                (f.mean_degree && *f.mean_degree > 0.0 && std::isfinite(*f.mean_degree)),
             "neither d_min nor a mean degree > 0");
   c.require(f.cutoff > 0.0, "--cutoff not > 0");
+  c.require(f.link == "capped" || f.link == "poisson" || f.link == "odds", "--link unknown");
 }
 
-inline void check_complete(const cli::CompleteFlags& f, const std::string& line) {
+inline void check_complete(const app::CompleteRequest& f, const std::string& line) {
   const RangeChecks c(line);
   c.require(f.n >= 2 && f.n <= 2147483647, "--n outside 2..2^31-1");
 }
 
-inline void check_sbm(const cli::SbmFlags& f, const std::string& line) {
+inline void check_sbm(const app::SbmRequest& f, const std::string& line) {
   const RangeChecks c(line);
   c.require(f.half >= 1 && f.half <= 1073741823, "--half outside 1..2^30-1");
   c.require(f.p_in >= 0.0 && f.p_in <= 1.0, "--p-in not a probability");
   c.require(f.p_out >= 0.0 && f.p_out <= 1.0, "--p-out not a probability");
+  c.require(f.p_in > 0.0 || f.p_out > 0.0, "--p-in and --p-out both 0");
 }
 
-inline void check_regular(const cli::RegularFlags& f, const std::string& line) {
+inline void check_regular(const app::RegularRequest& f, const std::string& line) {
   const RangeChecks c(line);
-  c.require(f.n >= 1, "--n < 1");
-  c.require(f.degree >= 0, "--degree < 0");
+  c.require(f.n >= 2, "--n < 2");
+  c.require(f.degree >= 1, "--degree < 1");
 }
 
 // simulate's grammar holds the types, the seed's text, --threads' count and the K options that
@@ -96,11 +102,23 @@ inline void check_simulate(const cli::SimulateFlags& f, const std::string& line)
 
 inline void check_theory(const cli::TheoryFlags& f, const std::string& line) {
   const RangeChecks c(line);
-  c.positive(f.sigma0, "--sigma0 not > 0");
-  for (double k : f.K) c.positive(k, "--K not > 0");
-  for (double k : f.K_over_Kc) c.positive(k, "--K-over-Kc not > 0");
-  c.require(!f.K.empty() || !f.K_over_Kc.empty(), "no couplings");
-  c.require(f.tolerance >= 1e-14 && f.tolerance <= 1e-2, "--tolerance outside [1e-14, 1e-2]");
+  const app::TheoryRequest& r = f.request;
+  c.positive(r.sigma0, "--sigma0 not > 0");
+  c.require(r.momenta == "gaussian" || r.momenta == "waterbag", "--momenta unknown");
+  for (double k : r.K) c.positive(k, "--K not > 0");
+  for (double k : r.K_over_Kc) c.positive(k, "--K-over-Kc not > 0");
+  c.require(r.K.empty() != r.K_over_Kc.empty(), "not one of --K and --K-over-Kc");
+  c.require(r.tolerance >= 1e-14 && r.tolerance <= 1e-2, "--tolerance outside [1e-14, 1e-2]");
+  c.read_flags(f.read);
+}
+
+inline void check_spectrum(const cli::SpectrumFlags& f, const std::string& line) {
+  const RangeChecks c(line);
+  const app::SpectrumRequest& r = f.request;
+  if (r.sigma0) c.positive(*r.sigma0, "--sigma0 not > 0");
+  c.require(r.tolerance >= 1e-15 && r.tolerance <= 1e-2, "--tolerance range");
+  c.require(r.lambda2 == "auto" || r.lambda2 == "converged" || r.lambda2 == "bound",
+            "--lambda2 unknown");
   c.read_flags(f.read);
 }
 
@@ -127,27 +145,22 @@ inline bool parse_command_line(std::vector<std::string> args) {
                              [&] { check_regular(generate.regular, line), reached = true; }});
   cli::add_rewire_options(app, rewire, [&] {
     const RangeChecks c(line);
-    c.positive(rewire.target_rho, "--target-rho not > 0");
-    c.require(rewire.max_attempts >= 0, "--max-attempts < 0");
+    c.positive(rewire.request.target_rho, "--target-rho not > 0");
+    c.require(rewire.request.max_attempts >= 0, "--max-attempts < 0");
     c.read_flags(rewire.read);
     reached = true;
   });
   cli::add_convert_options(app, convert, [&] {
     const RangeChecks c(line);
-    c.require(convert.partition >= 0 && convert.partition <= 65536, "--partition range");
-    c.require(convert.order == "original" || convert.order == "rcm" || convert.order == "degree",
+    const app::ConvertRequest& r = convert.request;
+    c.require(r.partition >= 0 && r.partition <= 65536, "--partition range");
+    c.require(r.order == "original" || r.order == "rcm" || r.order == "degree",
               "--order not a known order");
-    c.require(convert.partition == 0 || convert.order == "original", "--partition with --order");
+    c.require(r.partition == 0 || r.order == "original", "--partition with --order");
     c.read_flags(convert.read);
     reached = true;
   });
-  cli::add_spectrum_options(app, spectrum, [&] {
-    const RangeChecks c(line);
-    c.non_negative(spectrum.sigma0, "--sigma0 not >= 0");
-    c.require(spectrum.tolerance >= 1e-15 && spectrum.tolerance <= 1e-2, "--tolerance range");
-    c.read_flags(spectrum.read);
-    reached = true;
-  });
+  cli::add_spectrum_options(app, spectrum, [&] { check_spectrum(spectrum, line), reached = true; });
   cli::add_theory_options(app, theory, [&] { check_theory(theory, line), reached = true; });
   cli::add_simulate_options(app, simulate, [&] { check_simulate(simulate, line), reached = true; });
   cli::add_demo_options(app, demo, [&] {
@@ -161,7 +174,7 @@ inline bool parse_command_line(std::vector<std::string> args) {
   } catch (const CLI::Error&) {
     return false;  // a parse error, --help or --version: main() prints it and exits
   } catch (const hmfnet::ParameterError&) {
-    return false;  // a check across options (e.g. theory without couplings)
+    return false;  // a check across options the command makes itself
   }
   return reached;
 }

@@ -1,6 +1,5 @@
 """spectrum, theory and simulate from Python against the CLI on the same network file and
-parameters: the same code path (src/app for simulate, cli/command_reports.hpp for the others), so the numbers must agree to
-round-off (the network reaches the CLI through a file, rebuilt row by row: same matrix, same
+parameters: the same services (src/app), so the numbers must agree to round-off (the network reaches the CLI through a file, rebuilt row by row: same matrix, same
 order of operations; 1e-12 relative leaves room for nothing but that)."""
 import networkx as nx
 import numpy as np
@@ -19,6 +18,11 @@ def test_spectrum_equals_the_cli(karate, run_cli):
         assert py[key] == pytest.approx(cli[key], rel=RTOL), key
     for key in ("n", "nnz", "edges", "components", "bipartite", "warnings"):
         assert py[key] == cli[key], key
+    # One list of fields (visit_spectrum_fields): the same keys, and the same values but the
+    # clocks' and the memory's.
+    assert set(py) == set(cli)
+    for key in set(cli) - {"eigensolver_seconds", "peak_rss_mb_per_rank"}:
+        assert py[key] == pytest.approx(cli[key], rel=RTOL), key
 
 
 def test_theory_equals_the_cli(karate, run_cli):
@@ -33,6 +37,14 @@ def test_theory_equals_the_cli(karate, run_cli):
         np.testing.assert_allclose(py["sigma2"], [p["sigma2"] for p in cli["points"]], rtol=RTOL)
         assert list(py["status"]) == [p["status"] for p in cli["points"]]
         assert py["R"].dtype == float and py["K"].shape == (3,)
+        # One list of fields each (visit_theory_fields, visit_theory_point_fields,
+        # visit_growth_fields): the CLI's keys at every level, with its values.
+        assert set(cli) <= set(py)
+        for key in set(cli) - {"points", "gamma", "peak_rss_mb_per_rank"}:
+            assert py[key] == pytest.approx(cli[key], rel=RTOL), key
+        assert [set(p) for p in py["points"]] == [set(p) for p in cli["points"]]
+        assert py["gamma"] == pytest.approx(cli["gamma"], rel=RTOL)
+        assert len(py["gamma"]) == 2  # K / K_c = 1.5 and 3 grow, 0.5 does not
 
 
 def test_theory_on_the_complete_graph_needs_no_rows():
@@ -97,7 +109,7 @@ def test_read_run_round_trips_the_cli_file(karate, run_cli, tmp_path):
 
 
 @pytest.mark.parametrize("call, message", [
-    (lambda n: hmfnet.theory(n, sigma0=0.0, K=[1]), "--sigma0: value 0.0 is not allowed \\(allowed: > 0\\)"),
+    (lambda n: hmfnet.theory(n, sigma0=0.0, K=[1]), "--sigma0: value 0 is not allowed \\(allowed: > 0\\)"),
     (lambda n: hmfnet.theory(n, sigma0=0.3), "--K / --K-over-Kc"),
     (lambda n: hmfnet.theory(n, sigma0=0.3, K=[1], K_over_Kc=[1]), "excludes"),
     (lambda n: hmfnet.theory(n, sigma0=0.3, K=[1], momenta="lorentz"), "--momenta"),
