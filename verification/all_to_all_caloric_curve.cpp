@@ -38,7 +38,7 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/rank_one_force.hpp"
+#include "app/force_choice.hpp"
 #include "dynamics/simulation.hpp"
 #include "network/complete_graph.hpp"
 #include "parallel/distributed_network.hpp"
@@ -92,7 +92,7 @@ struct Deviation {
 SimulationResult run_all(ClaimCheck& check, NodeIndex n, const Scale& s) {
   const CompleteGraph graph = CompleteGraph::make(n, true);
   const DistributedNetwork d(graph);
-  RankOneForce force(complete_graph_structure(graph), d.first_row(), d.local_size());
+  const auto force = app::choose_force("auto", "float64", d);
   SimulationParameters p;
   p.h = 0.1;
   p.duration = s.segment;
@@ -108,7 +108,7 @@ SimulationResult run_all(ClaimCheck& check, NodeIndex n, const Scale& s) {
     }
   }
   const SimulationResult result =
-      simulate(d, std::vector<double>(static_cast<std::size_t>(n), graph.degree()), force, p);
+      simulate(d, std::vector<double>(static_cast<std::size_t>(n), graph.degree()), *force, p);
   verification::account(check, p, result);
   return result;
 }

@@ -37,7 +37,7 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/network_force.hpp"
+#include "app/force_choice.hpp"
 #include "dynamics/simulation.hpp"
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
@@ -75,8 +75,8 @@ Run locked_run(ClaimCheck& check, const Network& net, double t1, double t2) {
   p.replicas = {{6.0, 1.0, 7}};
   p.record_stride = 100;
   p.node_data = true;
-  NetworkForce force(d);
-  const SimulationResult sim = simulate(d, net.degrees(), force, p);
+  const auto force = app::choose_force("auto", "float64", d);
+  const SimulationResult sim = simulate(d, net.degrees(), *force, p);
   verification::account(check, p, sim);
   return {sim.points.front(), p.K[0], perron.lambda, perron.u};
 }

@@ -46,7 +46,7 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/network_force.hpp"
+#include "app/force_choice.hpp"
 #include "dynamics/simulation.hpp"
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
@@ -274,8 +274,8 @@ int main(int argc, char** argv) {
 
   // Step 2: the run, sampling node kRotor every record in [T1, T2].
   const SimulationParameters p = run_parameters(K, t1, t2);
-  NetworkForce force(d);
-  const SimulationResult sim = simulate(d, net.degrees(), force, p);
+  const auto force = app::choose_force("auto", "float64", d);
+  const SimulationResult sim = simulate(d, net.degrees(), *force, p);
   verification::account(check, p, sim);
   const PointResult& point = sim.points.front();
   const double n = static_cast<double>(net.size());

@@ -15,7 +15,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "dynamics/network_force.hpp"
+#include "app/force_choice.hpp"
 #include "dynamics/simulation.hpp"
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
@@ -47,8 +47,8 @@ int main(int argc, char** argv) {
     p.K = {3.0 * Kc, 3.0 * Kc};
     p.replicas = {{6.0, 0.35, 1}};
     p.record_stride = 10;
-    NetworkForce force(d);
-    const SimulationResult r = simulate(d, net.degrees(), force, p);
+    const auto force = app::choose_force("auto", "float64", d);
+    const SimulationResult r = simulate(d, net.degrees(), *force, p);
     verification::account(check, p, r);
     // Step 3: energy relative to H at the start of the whole run, per half.
     const double e0 = r.series.energy.front();

@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/network_force.hpp"
+#include "app/force_choice.hpp"
 #include "dynamics/simulation.hpp"
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
@@ -71,8 +71,8 @@ Floor floor_at_half_kc(ClaimCheck& check, NodeIndex n, double q, std::uint64_t s
   for (int b = 1; b <= s.replicas; ++b)
     p.replicas.push_back({6.0, 0.35, 100 * seed + static_cast<std::uint64_t>(b)});
   p.record_stride = 1000;
-  NetworkForce force(distributed);
-  const SimulationResult result = simulate(distributed, net.degrees(), force, p);
+  const auto force = app::choose_force("auto", "float64", distributed);
+  const SimulationResult result = simulate(distributed, net.degrees(), *force, p);
   verification::account(check, p, result);
   const PointResult& point = result.points.front();
   const verification::MeanSd m = verification::mean_sd(point.R_mean);

@@ -37,7 +37,7 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/network_force.hpp"
+#include "app/force_choice.hpp"
 #include "dynamics/rotor_state.hpp"
 #include "dynamics/simulation.hpp"
 #include "network/erdos_renyi.hpp"
@@ -82,8 +82,8 @@ KResult run_one_k(ClaimCheck& check, const Network& net, const DistributedNetwor
     p.replicas.push_back({kOmega, kSigma0, static_cast<std::uint64_t>(11 + b)});
   }
   p.record_stride = 1;
-  NetworkForce force(d);
-  const SimulationResult sim = simulate(d, net.degrees(), force, p);
+  const auto force = app::choose_force("auto", "float64", d);
+  const SimulationResult sim = simulate(d, net.degrees(), *force, p);
   verification::account(check, p, sim);
   const auto B = static_cast<std::size_t>(replicas);
   const std::size_t records = sim.series.t.size();

@@ -59,7 +59,7 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/network_force.hpp"
+#include "app/force_choice.hpp"
 #include "dynamics/simulation.hpp"
 #include "network/chung_lu.hpp"
 #include "network/degree_statistics.hpp"
@@ -109,8 +109,8 @@ Sample simulate_at(ClaimCheck& check, const Network& net, const DistributedNetwo
     p.replicas.push_back({kOmega, kSigma0, static_cast<std::uint64_t>(100 + b)});
   }
   p.record_stride = 100;
-  NetworkForce force(d);
-  const SimulationResult sim = simulate(d, net.degrees(), force, p);
+  const auto force = app::choose_force("auto", "float64", d);
+  const SimulationResult sim = simulate(d, net.degrees(), *force, p);
   verification::account(check, p, sim);
   const PointResult& pt = sim.points.front();
   const auto B = static_cast<std::size_t>(replicas);

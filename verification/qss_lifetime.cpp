@@ -35,7 +35,7 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/rank_one_force.hpp"
+#include "app/force_choice.hpp"
 #include "dynamics/simulation.hpp"
 #include "network/complete_graph.hpp"
 #include "parallel/distributed_network.hpp"
@@ -65,7 +65,7 @@ struct Life {
 Life measure(ClaimCheck& check, NodeIndex n) {
   const CompleteGraph graph = CompleteGraph::make(n, true);
   const DistributedNetwork d(graph);
-  RankOneForce force(complete_graph_structure(graph), d.first_row(), d.local_size());
+  const auto force = app::choose_force("auto", "float64", d);
   SimulationParameters p;
   p.h = 0.1;
   p.duration = std::ceil(0.6 * std::pow(static_cast<double>(n), 1.7) / 100.0) * 100.0;
@@ -79,7 +79,7 @@ Life measure(ClaimCheck& check, NodeIndex n) {
                           MomentumDistribution::waterbag});
   }
   const SimulationResult r =
-      simulate(d, std::vector<double>(static_cast<std::size_t>(n), graph.degree()), force, p);
+      simulate(d, std::vector<double>(static_cast<std::size_t>(n), graph.degree()), *force, p);
   verification::account(check, p, r);
   Life life;
   life.n = n;

@@ -64,7 +64,7 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/network_force.hpp"
+#include "app/force_choice.hpp"
 #include "dynamics/simulation.hpp"
 #include "network/chung_lu.hpp"
 #include "network/degree_statistics.hpp"
@@ -332,13 +332,13 @@ void check_panel(ClaimCheck& check, const Panel& panel, const Scale& sc) {
   const PerronResult perron = perron_eigenpair(d);
   const double Kc = critical_coupling(panel.sigma0, panel.net.size(), perron.lambda);
   const double G = onset_amplitude(perron.lambda, mean_degree(panel.net), perron.u);
-  NetworkForce force(d);
+  const auto force = app::choose_force("auto", "float64", d);
   double floor = NAN;
   for (const bool sweep : {false, true}) {
     const std::vector<double>& x = sweep ? sc.sweep : sc.K_over_Kc;
     const std::string name = panel.name + (sweep ? " sweep" : "");
     const SimulationParameters p = schedule(panel, Kc, x, sc, sweep);
-    const SimulationResult sim = simulate(d, panel.net.degrees(), force, p);
+    const SimulationResult sim = simulate(d, panel.net.degrees(), *force, p);
     verification::account(check, p, sim);
     std::printf("  INFO  %s: lambda %.2f, K_c %.4g, G %.3f; %zu K, %.0f s of integration\n",
                 name.c_str(), perron.lambda, Kc, G, x.size(), sim.integration_seconds);

@@ -34,7 +34,7 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/network_force.hpp"
+#include "app/force_choice.hpp"
 #include "dynamics/simulation.hpp"
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
@@ -89,10 +89,10 @@ Outcome run(const DistributedNetwork& d, const Network& net, double K, const std
   // Stability, not accuracy: the default guard (1e-2 of H) stops runs for their error long
   // before the map goes unstable once the potential energy dominates H (K >~ 100 K_c here).
   p.energy_tolerance = k_energy_tolerance;
-  NetworkForce force(d);
+  const auto force = app::choose_force("auto", "float64", d);
   Outcome o;
   try {
-    const SimulationResult r = simulate(d, net.degrees(), force, p);
+    const SimulationResult r = simulate(d, net.degrees(), *force, p);
     o.finished = true;
     for (const double x : r.series.R) o.finite = o.finite && std::isfinite(x);
     for (const double x : r.points[0].R_node) o.max_R_node = std::max(o.max_R_node, x);

@@ -35,7 +35,7 @@
 #include <vector>
 
 #include "analysis/network_summary.hpp"
-#include "dynamics/network_force.hpp"
+#include "app/force_choice.hpp"
 #include "dynamics/simulation.hpp"
 #include "network/degree_statistics.hpp"
 #include "network/erdos_renyi.hpp"
@@ -113,8 +113,8 @@ std::vector<double> measure_gap(ClaimCheck& check, const Case& c, const Distribu
   p.record_stride = 100;
   p.continue_state = false;
   p.K_across_replicas = true;  // both K in one pass (replica_lanes.hpp: the same bits)
-  NetworkForce force(d);
-  const SimulationResult sim = simulate(d, c.net.degrees(), force, p);
+  const auto force = app::choose_force("auto", "float64", d);
+  const SimulationResult sim = simulate(d, c.net.degrees(), *force, p);
   verification::account(check, p, sim);
   const double n = static_cast<double>(c.net.size());
   const auto B = static_cast<std::size_t>(sc.replicas);

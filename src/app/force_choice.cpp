@@ -27,12 +27,9 @@ std::unique_ptr<CouplingForce> complete_graph_force(const std::string& force,
                                         distributed.local_size());
 }
 
-}  // namespace
-
-std::unique_ptr<CouplingForce> choose_force(const std::string& force, const std::string& precision,
-                                            const DistributedInput& input) {
-  const DistributedNetwork& distributed = *input.network;
-  if (input.complete) return complete_graph_force(force, precision, *input.complete, distributed);
+std::unique_ptr<CouplingForce> stored_rows_force(const std::string& force,
+                                                 const std::string& precision,
+                                                 const DistributedNetwork& distributed) {
   const ForcePrecision p = parse_force_precision(precision);
   if (p == ForcePrecision::float32 && force == "rank-one") {
     throw ParameterError("--precision", "float32",
@@ -50,6 +47,26 @@ std::unique_ptr<CouplingForce> choose_force(const std::string& force, const std:
     }
   }
   return std::make_unique<NetworkForce>(distributed, p);
+}
+
+}  // namespace
+
+std::unique_ptr<CouplingForce> choose_force(const std::string& force, const std::string& precision,
+                                            const DistributedInput& input) {
+  const DistributedNetwork& distributed = *input.network;
+  if (input.complete) return complete_graph_force(force, precision, *input.complete, distributed);
+  return stored_rows_force(force, precision, distributed);
+}
+
+std::unique_ptr<CouplingForce> choose_force(const std::string& force, const std::string& precision,
+                                            const DistributedNetwork& network) {
+  if (!network.stores_rows()) {
+    // The only structure held without rows is K_N (parallel/distributed_network.hpp); its size
+    // and self-loops are all the rank-one force needs of it.
+    const CompleteGraph graph{network.global_size(), network.global_self_loops() != 0};
+    return complete_graph_force(force, precision, graph, network);
+  }
+  return stored_rows_force(force, precision, network);
 }
 
 }  // namespace hmfnet::app

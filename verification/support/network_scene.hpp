@@ -1,18 +1,17 @@
 #pragma once
 // A network as the long-run drivers (near_onset_gap, qss_networks, waterbag_threshold) integrate
-// and solve it: its
-// rows over the ranks, its force (the O(N) rank-one force on the complete graph, the sparse one
-// otherwise) and what eq:rSigmaBesselMain needs of it (on K_N its one-node quotient: the same map
-// and solution, network/complete_graph.hpp), with the comparison at a run's own conserved E and P
-// (run_variance.hpp).
+// and solve it: its rows over the ranks, its force (the one a user's run gets, app::choose_force
+// under auto: the O(N) rank-one force on the complete graph, the sparse one on the stored
+// networks here) and what eq:rSigmaBesselMain needs of it (on K_N its one-node quotient: the
+// same map and solution, network/complete_graph.hpp), with the comparison at a run's own
+// conserved E and P (run_variance.hpp).
 #include <cmath>
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "dynamics/network_force.hpp"
-#include "dynamics/rank_one_force.hpp"
+#include "app/force_choice.hpp"
 #include "dynamics/simulation.hpp"
 #include "network/complete_graph.hpp"
 #include "network/degree_statistics.hpp"
@@ -51,12 +50,12 @@ std::unique_ptr<Scene> complete_scene(NodeIndex n) {
   s->lambda = graph.lambda();
   s->degrees.assign(static_cast<std::size_t>(n), graph.degree());
   s->rows = std::make_unique<DistributedNetwork>(graph);
-  s->force = std::make_unique<RankOneForce>(complete_graph_structure(graph), s->rows->first_row(),
-                                            s->rows->local_size());
+  s->force = app::choose_force("auto", "float64", *s->rows);
   return s;
 }
 
-/// A stored network, on the sparse force; its Perron pair from Anasazi.
+/// A stored network, on the force auto gives it (sparse unless A = a a^T); its Perron pair from
+/// Anasazi.
 template <class Scene = NetworkScene>
 std::unique_ptr<Scene> stored_scene(Network network) {
   auto s = std::make_unique<Scene>();
@@ -68,7 +67,7 @@ std::unique_ptr<Scene> stored_scene(Network network) {
   s->perron = perron.u;
   s->degree = mean_degree(s->theory_net);
   s->degrees = s->theory_net.degrees();
-  s->force = std::make_unique<NetworkForce>(*s->rows);
+  s->force = app::choose_force("auto", "float64", *s->rows);
   return s;
 }
 

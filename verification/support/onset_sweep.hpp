@@ -56,7 +56,7 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/network_force.hpp"
+#include "app/force_choice.hpp"
 #include "dynamics/simulation.hpp"
 #include "network/network.hpp"
 #include "parallel/distributed_network.hpp"
@@ -252,8 +252,8 @@ inline void run_sweep(OnsetCurve& c, const DistributedNetwork& distributed, cons
     p.replicas.push_back(
         {protocol.omega, c.sigma0, protocol.seed_base + static_cast<std::uint64_t>(b)});
   p.record_stride = 1000;
-  NetworkForce force(distributed);
-  const SimulationResult r = simulate(distributed, net.degrees(), force, p);
+  const auto force = app::choose_force("auto", "float64", distributed);
+  const SimulationResult r = simulate(distributed, net.degrees(), *force, p);
   c.cost += cost_of(p, r);
   std::size_t segment = 0;
   for (std::size_t k = first_point; k < c.x.size(); ++k) {
