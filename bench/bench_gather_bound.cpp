@@ -43,13 +43,14 @@ T gather_rows(const EdgeOffset* row_ptr, const NodeIndex* cols, NodeIndex rows, 
     T acc[S][W] = {};
     const EdgeOffset begin = row_ptr[r], end = row_ptr[r + 1];
     EdgeOffset k = begin;
-    for (; k + static_cast<EdgeOffset>(S) <= end; k += static_cast<EdgeOffset>(S))
+    for (; k + static_cast<EdgeOffset>(S) <= end; k += static_cast<EdgeOffset>(S)) {
       for (std::size_t c = 0; c < S; ++c) {
         const T* q = table + static_cast<std::ptrdiff_t>(cols[k + static_cast<EdgeOffset>(c)]) *
                                  static_cast<std::ptrdiff_t>(W);
 #pragma omp simd
         for (std::size_t j = 0; j < W; ++j) acc[c][j] += q[j];
       }
+    }
     for (; k < end; ++k) {
       const T* q = table + static_cast<std::ptrdiff_t>(cols[k]) * static_cast<std::ptrdiff_t>(W);
 #pragma omp simd
@@ -143,9 +144,10 @@ void GatherLadder(benchmark::State& state) {
   std::uniform_int_distribution<NodeIndex> pick(0, static_cast<NodeIndex>(records) - 1);
   for (auto& c : cols) c = pick(rng);
   const std::vector<double> table(2 * records, 0.5);
-  for (auto _ : state)
+  for (auto _ : state) {
     benchmark::DoNotOptimize(
         gather_rows<double, 2>(row_ptr.data(), cols.data(), rows, table.data()));
+  }
   state.counters["gathers_per_s"] = benchmark::Counter(
       static_cast<double>(cols.size()), benchmark::Counter::kIsIterationInvariantRate);
 }

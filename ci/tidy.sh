@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# clang-tidy over every src/*.cpp with the repository's .clang-tidy (which fails on any finding:
-# WarningsAsErrors '*'; our own src/ headers are checked through HeaderFilterRegex). Uses the
+# clang-tidy over every src/, verification/ and bench/ *.cpp with the repository's .clang-tidy
+# (which fails on any finding: WarningsAsErrors '*'; our own headers are checked through
+# HeaderFilterRegex). Uses the
 # compile database build/compile_commands.json that ci/build.sh configures, runs $(nproc) files
 # at a time, prints each failing file's findings, a count per check and the slowest files, and
 # exits non-zero on any finding or clang-tidy failure. Changes nothing.
@@ -12,7 +13,7 @@ if [ ! -f "$db" ]; then
   echo "ci/tidy.sh: $db is missing; run ci/build.sh first (it configures build/)" >&2
   exit 1
 fi
-mapfile -t files < <(git ls-files 'src/*.cpp')
+mapfile -t files < <(git ls-files 'src/*.cpp' 'verification/*.cpp' 'bench/*.cpp')
 if [ ${#files[@]} -eq 0 ]; then
   echo "ci/tidy.sh: no sources found (not a git checkout?)" >&2
   exit 1

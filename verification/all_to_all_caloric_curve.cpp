@@ -107,7 +107,7 @@ SimulationResult run_all(ClaimCheck& check, NodeIndex n, const Scale& s) {
       p.replicas.push_back({0.0, std::sqrt(2.0 * k_energies[u] - 1.0), seed});
     }
   }
-  const SimulationResult result =
+  SimulationResult result =
       simulate(d, std::vector<double>(static_cast<std::size_t>(n), graph.degree()), *force, p);
   verification::account(check, p, result);
   return result;

@@ -54,7 +54,7 @@ using verification::ClaimCheck;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double k_pi = 3.14159265358979323846;
 
 struct Run {
   PointResult point;
@@ -98,7 +98,7 @@ void check_frequencies(ClaimCheck& check, const Run& run, double window) {
   double rms = 0.0, worst = 0.0, rotor_rms = 0.0, rotor_worst = 0.0;
   const std::vector<double> rel = relative(run.point.psi_frequency, rms, worst);
   const std::vector<double> rotor_rel = relative(run.point.omega_node, rotor_rms, rotor_worst);
-  const double bound = 2.0 * kPi / (window * omega);
+  const double bound = 2.0 * k_pi / (window * omega);
   const std::string why = "one phase slip per window: 2 pi / ((T2 - T1) Omega)";
   check.within_abs("(a) node-rms |Omega_n - Omega| / Omega (local fields psi_n)", rms, 0.0, bound,
                    why);
@@ -169,7 +169,7 @@ void check_phase_histogram(ClaimCheck& check, const Network& net, const Run& run
   std::complex<double> sum = 0.0;
   double total = 0.0;
   for (std::size_t k = 0; k < h.size(); ++k) {
-    const double phi = -kPi + 2.0 * kPi * (static_cast<double>(k) + 0.5) / bins;
+    const double phi = -k_pi + 2.0 * k_pi * (static_cast<double>(k) + 0.5) / bins;
     sum += h[k] * std::polar(1.0, phi);
     total += h[k];
   }

@@ -63,10 +63,10 @@ using verification::ClaimCheck;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kRejectBelow = 1e-3;  // p-value of the chi-square tests
-constexpr double kZ = 3.29;            // two-sided 0.001 level of a normal deviate
-constexpr NodeIndex kRotor = 0;
+constexpr double k_pi = 3.14159265358979323846;
+constexpr double k_reject_below = 1e-3;  // p-value of the chi-square tests
+constexpr double k_z = 3.29;            // two-sided 0.001 level of a normal deviate
+constexpr NodeIndex k_rotor = 0;
 
 struct Reference {
   double r = 0.0, beta = 0.0, mu0 = 0.0;
@@ -75,13 +75,13 @@ struct Reference {
   double x(double K) const { return K * beta * r; }
 };
 
-// eq:rSigmaBesselMain for node kRotor at the given mu0 = sigma0^2 - K c0 (self_consistent.hpp).
+// eq:rSigmaBesselMain for node k_rotor at the given mu0 = sigma0^2 - K c0 (self_consistent.hpp).
 Reference boltzmann_reference(const Network& net, const PerronResult& perron, double K,
                               double mu0) {
   const double c0 = (1.0 - mu0) / K;
   const SelfConsistentSystem system(net, perron.lambda, 1.0, c0, perron.u);
   const SelfConsistentSolution sol = system.solve(K);
-  return {sol.r[static_cast<std::size_t>(kRotor)], 1.0 / sol.sigma2, mu0,
+  return {sol.r[static_cast<std::size_t>(k_rotor)], 1.0 / sol.sigma2, mu0,
           sol.status != SolveStatus::failed, sol};
 }
 
@@ -147,10 +147,10 @@ double theta_weight(double theta, double x) { return std::exp(x * (std::cos(thet
 // Inner edges of `bins` equiprobable bins of the theta_bar marginal (trapezoid CDF, 2^16 cells).
 std::vector<double> theta_edges(double x, int bins) {
   const int cells = 1 << 16;
-  const double dt = 2.0 * kPi / cells;
+  const double dt = 2.0 * k_pi / cells;
   std::vector<double> cdf(static_cast<std::size_t>(cells) + 1, 0.0);
   for (int i = 0; i < cells; ++i) {
-    const double a = -kPi + i * dt;
+    const double a = -k_pi + i * dt;
     cdf[static_cast<std::size_t>(i) + 1] =
         cdf[static_cast<std::size_t>(i)] +
         0.5 * dt * (theta_weight(a, x) + theta_weight(a + dt, x));
@@ -161,7 +161,7 @@ std::vector<double> theta_edges(double x, int bins) {
     const double target = cdf.back() * b / bins;
     while (cdf[i + 1] < target) ++i;
     const double f = (target - cdf[i]) / (cdf[i + 1] - cdf[i]);
-    edges.push_back(-kPi + (static_cast<double>(i) + f) * dt);
+    edges.push_back(-k_pi + (static_cast<double>(i) + f) * dt);
   }
   return edges;
 }
@@ -183,16 +183,16 @@ void reference_curves(ClaimCheck& check, double beta, double x_field, double x_t
   const int points = 400;
   double norm_field = 0.0, norm_theory = 0.0;
   for (int i = 0; i < points; ++i) {
-    norm_field += theta_weight(-kPi + 2.0 * kPi * i / points, x_field) * 2.0 * kPi / points;
-    norm_theory += theta_weight(-kPi + 2.0 * kPi * i / points, x_theory) * 2.0 * kPi / points;
+    norm_field += theta_weight(-k_pi + 2.0 * k_pi * i / points, x_field) * 2.0 * k_pi / points;
+    norm_theory += theta_weight(-k_pi + 2.0 * k_pi * i / points, x_theory) * 2.0 * k_pi / points;
   }
   const double sd = 1.0 / std::sqrt(beta);
   for (int i = 0; i <= points; ++i) {
-    const double a = -kPi + 2.0 * kPi * i / points;
+    const double a = -k_pi + 2.0 * k_pi * i / points;
     theta.insert(theta.end(), {a, theta_weight(a, x_field) / norm_field,
                                theta_weight(a, x_theory) / norm_theory});
     const double q = -6.0 * sd + 12.0 * sd * i / points;
-    p.insert(p.end(), {q, std::exp(-0.5 * q * q / (sd * sd)) / (sd * std::sqrt(2.0 * kPi))});
+    p.insert(p.end(), {q, std::exp(-0.5 * q * q / (sd * sd)) / (sd * std::sqrt(2.0 * k_pi))});
   }
   const auto rows = static_cast<std::size_t>(points) + 1;
   check.data("theory_theta", theta, rows,
@@ -214,11 +214,11 @@ void test_marginals(ClaimCheck& check, const std::vector<double>& theta,
   const ChiSquare theory = chi_square(theta, theta_edges(x_theory, bins));
   const ChiSquare momentum = chi_square(p, momentum_edges(beta, bins));
   check.holds("theta_bar marginal ~ exp(x cos theta) / (2 pi I0(x)), measured r_0 (chi-square)",
-              field.p_value >= kRejectBelow, verdict(field));
+              field.p_value >= k_reject_below, verdict(field));
   check.report("chi-square p-value of the theta_bar marginal, self-consistent r_0", theory.p_value,
-               kRejectBelow, verdict(theory));
+               k_reject_below, verdict(theory));
   check.holds("p_bar marginal ~ Gaussian, variance 1/beta (chi-square)",
-              momentum.p_value >= kRejectBelow, verdict(momentum));
+              momentum.p_value >= k_reject_below, verdict(momentum));
 }
 
 // Node averages of <cos theta_bar_n>_t (= synchronised / r_n, node_statistics.hpp) against
@@ -251,7 +251,7 @@ SimulationParameters run_parameters(double K, double t1, double t2) {
   p.replicas = {{6.0, 1.0, 11}};
   p.record_stride = 10;
   p.node_data = true;
-  p.rotor_node = kRotor;
+  p.rotor_node = k_rotor;
   return p;
 }
 
@@ -272,7 +272,7 @@ int main(int argc, char** argv) {
   const double Kc = critical_coupling(1.0, net.size(), perron.lambda);
   const double K = 50.0 * Kc;
 
-  // Step 2: the run, sampling node kRotor every record in [T1, T2].
+  // Step 2: the run, sampling node k_rotor every record in [T1, T2].
   const SimulationParameters p = run_parameters(K, t1, t2);
   const auto force = app::choose_force("auto", "float64", d);
   const SimulationResult sim = simulate(d, net.degrees(), *force, p);
@@ -314,6 +314,7 @@ int main(int argc, char** argv) {
   const std::vector<double>& theta = point.rotor_theta_bar;
   const std::vector<double>& pbar = point.rotor_p_bar;
   std::vector<double> cosine;
+  cosine.reserve(theta.size());
   for (const double a : theta) cosine.push_back(std::cos(a));
   const double tau_cos = integrated_time(cosine), tau_p = integrated_time(pbar);
   const auto stride = static_cast<std::size_t>(std::ceil(2.0 * std::max(tau_cos, tau_p)));
@@ -331,7 +332,7 @@ int main(int argc, char** argv) {
   test_marginals(check, theta_thin, p_thin, ref.beta, x_field, x, bins);
   const double cos_mean = mean(cosine);
   check.within_abs("<cos theta_bar>_t against v(K beta r_0), measured r_0 (eq:cosThetaBar)",
-                   cos_mean, bessel_ratio(x_field), kZ * cos_se,
+                   cos_mean, bessel_ratio(x_field), k_z * cos_se,
                    "3.29 standard errors (n / tau_cos effective samples), two-sided 0.001");
   check.report("<cos theta_bar>_t against v(K beta r_0), self-consistent r_0", cos_mean,
                bessel_ratio(x),

@@ -59,8 +59,8 @@ using verification::sample_growth_rate;
 
 namespace {
 
-constexpr double kSigma0 = 0.35;
-constexpr double kOmega = 6.0;
+constexpr double k_sigma0 = 0.35;
+constexpr double k_omega = 6.0;
 
 struct KResult {
   double gamma = 0.0, gamma_sample = 0.0, slope = 0.0, slope_sem = 0.0, rel_error = 0.0;
@@ -69,9 +69,9 @@ struct KResult {
 // Step 2 for one K: B replicas from the incoherent state, one fit each.
 KResult run_one_k(ClaimCheck& check, const Network& net, const DistributedNetwork& d, double lambda,
                   double x, int replicas, double bias) {
-  const double Kc = critical_coupling(kSigma0, net.size(), lambda);
+  const double Kc = critical_coupling(k_sigma0, net.size(), lambda);
   KResult k;
-  k.gamma = growth_rate(x, kSigma0);
+  k.gamma = growth_rate(x, k_sigma0);
   SimulationParameters p;
   p.h = 0.02;
   p.duration = 10.0 / k.gamma + 10.0;
@@ -79,7 +79,7 @@ KResult run_one_k(ClaimCheck& check, const Network& net, const DistributedNetwor
   p.K = {x * Kc};
   p.replicas.clear();
   for (int b = 0; b < replicas; ++b) {
-    p.replicas.push_back({kOmega, kSigma0, static_cast<std::uint64_t>(11 + b)});
+    p.replicas.push_back({k_omega, k_sigma0, static_cast<std::uint64_t>(11 + b)});
   }
   p.record_stride = 1;
   const auto force = app::choose_force("auto", "float64", d);

@@ -77,9 +77,9 @@ using verification::ClaimCheck;
 
 namespace {
 
-constexpr double kSigma0 = 0.35;
-constexpr double kOmega = 6.0;
-constexpr double kSqrtPi = 1.7724538509055160273;
+constexpr double k_sigma0 = 0.35;
+constexpr double k_omega = 6.0;
+constexpr double k_sqrt_pi = 1.7724538509055160273;
 
 struct Scale {
   NodeIndex n;
@@ -106,7 +106,7 @@ Sample simulate_at(ClaimCheck& check, const Network& net, const DistributedNetwo
   p.K = {K};
   p.replicas.clear();
   for (int b = 0; b < replicas; ++b) {
-    p.replicas.push_back({kOmega, kSigma0, static_cast<std::uint64_t>(100 + b)});
+    p.replicas.push_back({k_omega, k_sigma0, static_cast<std::uint64_t>(100 + b)});
   }
   p.record_stride = 100;
   const auto force = app::choose_force("auto", "float64", d);
@@ -124,8 +124,8 @@ Sample simulate_at(ClaimCheck& check, const Network& net, const DistributedNetwo
     // mu0 = sigma0^2 - K c0 = 2E/N - (P/N)^2 (self_consistent.hpp, eq:Hsub0).
     const double P = sim.series.momentum[last * B + b] / n;
     const double mu0 = 2.0 * sim.series.energy[last * B + b] / n - P * P;
-    const double c0 = (kSigma0 * kSigma0 - mu0) / K;
-    const SelfConsistentSystem system(net, perron.lambda, kSigma0, c0, perron.u);
+    const double c0 = (k_sigma0 * k_sigma0 - mu0) / K;
+    const SelfConsistentSystem system(net, perron.lambda, k_sigma0, c0, perron.u);
     const SelfConsistentSolution sol = system.solve(K);
     s.converged = s.converged && sol.status == SolveStatus::converged;
     s.theory_ep += sol.R / static_cast<double>(B);
@@ -152,16 +152,16 @@ AlphaResult run_alpha(ClaimCheck& check, double alpha, const Scale& sc) {
   a.alpha = alpha;
   a.lambda = perron.lambda;
   a.K = n;  // the paper's K / N = 1 (K = 10^4 at N = 10^4)
-  a.Kc = critical_coupling(kSigma0, n, perron.lambda);
+  a.Kc = critical_coupling(k_sigma0, n, perron.lambda);
   const LargeKLimit limit = solve_large_k_limit(net);
   a.R_hat = limit.R_hat;
   a.rd = degree_approximation_R_hat(net.degrees());
-  const SelfConsistentSystem nominal(net, perron.lambda, kSigma0, 0.0, perron.u);
+  const SelfConsistentSystem nominal(net, perron.lambda, k_sigma0, 0.0, perron.u);
   const SelfConsistentSolution sol = nominal.solve(a.K);
   a.R_K = sol.R;
   a.h_omega = sc.h * std::sqrt(a.K * *std::max_element(sol.r.begin(), sol.r.end()));
   double floor_sum = 0.0;
-  for (const double dn : net.degrees()) floor_sum += kSqrtPi * std::sqrt(dn) / 2.0;
+  for (const double dn : net.degrees()) floor_sum += k_sqrt_pi * std::sqrt(dn) / 2.0;
   a.R_floor = floor_sum / (n * mean_degree(net));
   a.converged = limit.status == SolveStatus::converged && sol.status == SolveStatus::converged;
   a.sim = simulate_at(check, net, d, perron, a.K, sc.h, sc.duration, sc.transient, sc.replicas);

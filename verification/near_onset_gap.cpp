@@ -76,12 +76,12 @@ using verification::ClaimCheck;
 
 namespace {
 
-constexpr double kSigma0Sq = 0.12;
-constexpr double kSmooth = 50.0;  // smoothing width and start window of tau, time units
-constexpr int kBootstrap = 200;
-constexpr int kStride = 10;
-constexpr double kPaperT1 = 500.0, kPaperT2 = 1000.0;
-const std::vector<double> kX{1.1, 1.2, 1.5};
+constexpr double k_sigma0_sq = 0.12;
+constexpr double k_smooth = 50.0;  // smoothing width and start window of tau, time units
+constexpr int k_bootstrap = 200;
+constexpr int k_stride = 10;
+constexpr double k_paper_T1 = 500.0, k_paper_T2 = 1000.0;
+const std::vector<double> k_x{1.1, 1.2, 1.5};
 
 struct Scale {
   std::vector<NodeIndex> sizes;  ///< the same N on both networks (K_N against ER at each N)
@@ -101,7 +101,7 @@ std::unique_ptr<Scene> make_scene(bool complete, NodeIndex n) {
   std::unique_ptr<Scene> s = complete ? verification::complete_scene<Scene>(n)
                                       : verification::stored_scene<Scene>(
                                             erdos_renyi({n, erdos_renyi_probability(n, 100.0), 1}));
-  s->Kc = critical_coupling(std::sqrt(kSigma0Sq), static_cast<double>(n), s->lambda);
+  s->Kc = critical_coupling(std::sqrt(k_sigma0_sq), static_cast<double>(n), s->lambda);
   return s;
 }
 
@@ -151,18 +151,18 @@ struct SegmentView {
 SegmentView segment_view(const SimulationParameters& p, const SimulationResult& sim,
                          std::size_t k) {
   const auto [first, last] = segment(sim, p.K[k]);
-  return {p.replicas.size(), first, last, kStride * p.h};
+  return {p.replicas.size(), first, last, k_stride * p.h};
 }
 
 // Windows, per replica, against its own theory.
 void window_gaps(Outcome& o, const Scene& scene, const SegmentView& v,
                  const SimulationParameters& p, const SimulationResult& sim, std::size_t k) {
   const double K = p.K[k];
-  const std::size_t p0 = v.index(kPaperT1), p1 = v.index(kPaperT2);
+  const std::size_t p0 = v.index(k_paper_T1), p1 = v.index(k_paper_T2);
   const std::size_t l0 = v.index(0.8 * p.duration);
   for (std::size_t b = 0; b < v.B; ++b) {
     const SelfConsistentSolution sol =
-        verification::theory_at_run(scene, sim, K, b, std::sqrt(kSigma0Sq));
+        verification::theory_at_run(scene, sim, K, b, std::sqrt(k_sigma0_sq));
     o.converged = o.converged && sol.status != SolveStatus::failed;
     const std::vector<double> R =
         verification::replica_mean(v.series(sim.series.R), {static_cast<int>(b)});
@@ -182,14 +182,14 @@ void approach(Outcome& o, const Scene& scene, const SegmentView& v, double durat
               const SimulationResult& sim, std::size_t k) {
   const std::size_t l0 = v.index(0.8 * duration), records = v.records();
   const verification::ReplicaSeries all = v.series(sim.series.R);
-  const auto width = static_cast<std::size_t>(std::lround(kSmooth / v.dt));
+  const auto width = static_cast<std::size_t>(std::lround(k_smooth / v.dt));
   o.tau = verification::bootstrap_passage(
       all,
       [&](const std::vector<double>& mean) {
         return verification::half_way_passage(mean, 0.0, v.dt, width,
                                               verification::window_mean(mean, l0, records));
       },
-      kBootstrap, 1000 * static_cast<std::uint64_t>(scene.n) + k);
+      k_bootstrap, 1000 * static_cast<std::uint64_t>(scene.n) + k);
   std::vector<int> replicas(v.B);
   for (std::size_t b = 0; b < v.B; ++b) replicas[b] = static_cast<int>(b);
   const std::vector<double> mean = verification::replica_mean(all, replicas);
@@ -211,11 +211,11 @@ Outcome analyse(const Scene& scene, const SimulationParameters& p, const Simulat
 }
 
 std::vector<Outcome> measure(ClaimCheck& check, const Scene& scene, const Scale& sc) {
-  const double sigma0 = std::sqrt(kSigma0Sq);
+  const double sigma0 = std::sqrt(k_sigma0_sq);
   SimulationParameters p;
-  const StepChoice step = verification::pipeline_step(kX.back(), sigma0, sc.T, kPaperT1);
-  for (const double x : kX) {
-    const StepChoice s = verification::pipeline_step(x, sigma0, sc.T, kPaperT1);
+  const StepChoice step = verification::pipeline_step(k_x.back(), sigma0, sc.T, k_paper_T1);
+  for (const double x : k_x) {
+    const StepChoice s = verification::pipeline_step(x, sigma0, sc.T, k_paper_T1);
     if (s.integrator != step.integrator || s.h != step.h) {
       throw std::logic_error("near_onset_gap: the K need one step to share a pass");
     }
@@ -224,8 +224,8 @@ std::vector<Outcome> measure(ClaimCheck& check, const Scene& scene, const Scale&
   p.integrator = step.integrator;
   p.h = step.h;
   p.duration = sc.T;
-  p.transient = kPaperT1;
-  p.record_stride = kStride;
+  p.transient = k_paper_T1;
+  p.record_stride = k_stride;
   p.continue_state = false;
   p.K_across_replicas = true;
   p.replicas.clear();
@@ -248,7 +248,7 @@ std::vector<Outcome> measure(ClaimCheck& check, const Scene& scene, const Scale&
         "  INFO  %s, K/K_c %.2f: R_th %.4f; gap (500, 1000] %+.4f +- %.4f, last fifth %+.4f +- "
         "%.4f; tau %.0f +- %.0f (%d of %d resamples); max |dH/H| %.1e\n",
         scene.name().c_str(), o.x, o.theory, paper.mean, paper.sd, late.mean, late.sd, o.tau.time,
-        o.tau.se, o.tau.passed, kBootstrap, o.energy_error);
+        o.tau.se, o.tau.passed, k_bootstrap, o.energy_error);
   }
   return out;
 }
@@ -328,7 +328,7 @@ void check_larger(ClaimCheck& check, const std::string& what, const std::vector<
 // Power laws of the paper-window and late |gap| against N, per K.
 void report_growth(ClaimCheck& check, const std::string& family, const std::vector<NodeIndex>& n,
                    const std::vector<std::vector<Outcome>>& by_n) {
-  for (std::size_t k = 0; k < kX.size(); ++k) {
+  for (std::size_t k = 0; k < k_x.size(); ++k) {
     for (const bool late : {false, true}) {
       std::vector<double> x, y, se;
       for (std::size_t i = 0; i < n.size(); ++i) {
@@ -338,7 +338,7 @@ void report_growth(ClaimCheck& check, const std::string& family, const std::vect
         se.push_back(m.sd);
       }
       const verification::PowerLaw fit = verification::power_law_fit(x, y, se);
-      check.report(family + ", K/K_c " + ClaimCheck::format(kX[k]) + ": exponent of |gap| " +
+      check.report(family + ", K/K_c " + ClaimCheck::format(k_x[k]) + ": exponent of |gap| " +
                        (late ? "over the last fifth" : "over (500, 1000]") + " against N",
                    fit.slope, 0.0,
                    "+- " + ClaimCheck::format(fit.slope_se) +
@@ -367,7 +367,7 @@ int main(int argc, char** argv) {
       const std::unique_ptr<Scene> scene = make_scene(complete, n);
       by_n.push_back(measure(check, *scene, sc));
       check_scene(check, *scene, by_n.back());
-      for (std::size_t k = 0; k < kX.size(); ++k) {
+      for (std::size_t k = 0; k < k_x.size(); ++k) {
         const Outcome& o = by_n.back()[k];
         const verification::MeanSd paper = mean_se(o.paper), late = mean_se(o.late);
         table.insert(table.end(), {complete ? 1.0 : 0.0, static_cast<double>(n), scene->degree, o.x,

@@ -70,7 +70,7 @@ using verification::OnsetCurve;
 
 namespace {
 
-constexpr double kSigma0 = 0.35;
+constexpr double k_sigma0 = 0.35;
 
 verification::SweepProtocol protocol(bool full) {
   verification::SweepProtocol p;
@@ -103,7 +103,7 @@ int main(int argc, char** argv) {
     const Network net =
         erdos_renyi({n, erdos_renyi_probability(n, degrees[i]), static_cast<std::uint64_t>(i + 1)});
     er.push_back(verification::check_onset(check, "ER <d> " + ClaimCheck::format(degrees[i]), net,
-                                           kSigma0, p));
+                                           k_sigma0, p));
   }
   verification::check_lines_up(check, "ER", er, std::vector<double>(5, 1.0), "lambda K");
   verification::add_onset_figure_data(
@@ -113,13 +113,13 @@ int main(int argc, char** argv) {
   std::vector<double> mean_degrees;
   const double alphas[] = {2.5, 2.8, 3.1, 3.5, 3.8};
   for (int i = 0; i < 5; ++i) {
-    const auto seed = static_cast<std::uint64_t>(i + 1);
+    const auto seed = static_cast<std::uint64_t>(i) + 1;
     const PowerLaw law{alphas[i], power_law_d_min_for_mean(alphas[i], 100.0),
                        static_cast<double>(n - 1)};
     const Network net = chung_lu(power_law_targets(n, law, seed), LinkProbability::capped, seed);
     mean_degrees.push_back(mean_degree(net));
     sf.push_back(verification::check_onset(check, "SF alpha " + ClaimCheck::format(alphas[i]), net,
-                                           kSigma0, p_sf));
+                                           k_sigma0, p_sf));
   }
   verification::check_lines_up(check, "SF", sf, mean_degrees, "lambda K");
   verification::add_onset_figure_data(

@@ -60,9 +60,10 @@ int main(int argc, char** argv) {
     rho.push_back(r.final_rho);
   }
   const double paper_rho[] = {0.78, 0.97, 1.09};
-  for (int i = 0; i < 3; ++i)
+  for (int i = 0; i < 3; ++i) {
     check.report("rho of network " + std::to_string(i + 1), rho[static_cast<std::size_t>(i)],
                  paper_rho[i], "targets rho0 + 0, 0.05, 0.10 (paper's not reachable)");
+  }
   // Step 2: one sweep per network.
   verification::SweepProtocol p;
   p.x = {0.0, 0.5, 0.9, 1.1, 1.2, 1.35, 1.5, 2.0, 3.0};

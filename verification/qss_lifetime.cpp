@@ -51,9 +51,9 @@ using verification::ClaimCheck;
 
 namespace {
 
-using verification::qss::kBootstrap;
-using verification::qss::kReplicas;
-using verification::qss::kSmooth;
+using verification::qss::k_bootstrap;
+using verification::qss::k_replicas;
+using verification::qss::k_smooth;
 
 struct Life {
   NodeIndex n = 0;
@@ -74,7 +74,7 @@ Life measure(ClaimCheck& check, NodeIndex n) {
   p.record_stride = 10;
   p.replicas.clear();
   const double sigma0 = verification::qss::sigma0();
-  for (int b = 0; b < kReplicas; ++b) {
+  for (int b = 0; b < k_replicas; ++b) {
     p.replicas.push_back({0.0, sigma0, static_cast<std::uint64_t>(7000 + 100 * n + b),
                           MomentumDistribution::waterbag});
   }
@@ -85,37 +85,37 @@ Life measure(ClaimCheck& check, NodeIndex n) {
   life.n = n;
   const std::size_t records = r.series.t.size();
   const double N = static_cast<double>(n);
-  for (std::size_t b = 0; b < kReplicas; ++b) {
+  for (std::size_t b = 0; b < k_replicas; ++b) {
     const double P = r.series.momentum[b] / N;
-    life.U += (r.series.energy[b] / N + 0.5 - 0.5 * P * P) / kReplicas;
+    life.U += (r.series.energy[b] / N + 0.5 - 0.5 * P * P) / k_replicas;
     life.energy_error = std::max(life.energy_error, r.points[0].energy_rel_error_max[b]);
   }
   // eq:rSigmaBesselMain on K_N at U0 = 0: kappa = 1 / (2 (2U - 1)) (all_to_all_caloric_curve.cpp).
   life.M_eq = all_to_all_order_parameter(1.0 / (2.0 * (2.0 * life.U - 1.0)));
   // The rule of the header (support/passage_time.hpp), target M_eq.
-  const verification::ReplicaSeries series{&r.series.R, kReplicas, 0, records};
+  const verification::ReplicaSeries series{&r.series.R, k_replicas, 0, records};
   const double dt = r.series.t[1] - r.series.t[0];
-  const auto width = static_cast<std::size_t>(std::lround(kSmooth / dt));
+  const auto width = static_cast<std::size_t>(std::lround(k_smooth / dt));
   const double M_eq = life.M_eq;
   const verification::Passage passage = verification::bootstrap_passage(
       series,
       [&](const std::vector<double>& mean) {
         return verification::half_way_passage(mean, r.series.t[0] - dt, dt, width, M_eq);
       },
-      kBootstrap, static_cast<std::uint64_t>(n));
+      k_bootstrap, static_cast<std::uint64_t>(n));
   life.life = passage.time;
   life.se = passage.se;
   life.passed = passage.passed;
   for (std::size_t i = 0; i < records; ++i) {
     double m = 0.0;
-    for (std::size_t b = 0; b < kReplicas; ++b) m += r.series.R[i * kReplicas + b] / kReplicas;
+    for (std::size_t b = 0; b < k_replicas; ++b) m += r.series.R[i * k_replicas + b] / k_replicas;
     life.t.push_back(r.series.t[i]);
     life.R.push_back(m);
   }
   std::printf(
       "  INFO  N = %d: U = %.4f, M_eq = %.4f, life %.0f +- %.0f (T = %.0f, %d of %d "
       "bootstrap resamples passed), max |dH/H| %.1e\n",
-      n, life.U, life.M_eq, life.life, life.se, p.duration, life.passed, kBootstrap,
+      n, life.U, life.M_eq, life.life, life.se, p.duration, life.passed, k_bootstrap,
       life.energy_error);
   return life;
 }
@@ -136,9 +136,9 @@ int main(int argc, char** argv) {
     lives.push_back(measure(check, n));
     const Life& l = lives.back();
     check.holds("the QSS relaxes within T(N) at N = " + std::to_string(n),
-                std::isfinite(l.life) && l.passed == kBootstrap,
+                std::isfinite(l.life) && l.passed == k_bootstrap,
                 "life " + ClaimCheck::format(l.life) + "; " + std::to_string(l.passed) + " of " +
-                    std::to_string(kBootstrap) + " bootstrap resamples passed");
+                    std::to_string(k_bootstrap) + " bootstrap resamples passed");
     table.insert(table.end(), {static_cast<double>(n), l.U, l.M_eq, l.life, l.se, l.energy_error});
     std::vector<double> series;
     for (std::size_t i = 0; i < l.t.size(); i += 10) series.insert(series.end(), {l.t[i], l.R[i]});

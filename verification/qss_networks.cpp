@@ -90,12 +90,12 @@ using verification::ClaimCheck;
 
 namespace {
 
-using verification::qss::kBootstrap;
-using verification::qss::kReplicas;
-using verification::qss::kSmooth;
-constexpr int kStride = 10;
-constexpr double kH = 0.1;
-constexpr NodeIndex kSweepDegree = 20;
+using verification::qss::k_bootstrap;
+using verification::qss::k_replicas;
+using verification::qss::k_smooth;
+constexpr int k_stride = 10;
+constexpr double k_h = 0.1;
+constexpr NodeIndex k_sweep_degree = 20;
 
 enum class Family { regular = 0, er = 1, complete = 2 };
 
@@ -144,14 +144,14 @@ struct Life {
 
 SimulationParameters parameters(const Scene& scene, NodeIndex budget_cap, int replicas) {
   SimulationParameters p;
-  p.h = kH;
+  p.h = k_h;
   const double budget_n = scene.family == Family::complete
                               ? static_cast<double>(scene.n)
                               : static_cast<double>(std::min(scene.n, budget_cap));
   p.duration = std::ceil(0.6 * std::pow(budget_n, 1.7) / 100.0) * 100.0;
   p.transient = 0.0;
   p.K = {static_cast<double>(scene.n) / scene.lambda};
-  p.record_stride = kStride;
+  p.record_stride = k_stride;
   p.replicas.clear();
   const double sigma0 = verification::qss::sigma0();
   const std::uint64_t scene_seed =
@@ -191,7 +191,7 @@ Life measure(ClaimCheck& check, const Scene& scene, NodeIndex budget_cap, int re
   theory_levels(life, scene, r, p.replicas[0].sigma0);
   const std::size_t records = r.series.t.size();
   const double dt = r.series.t[1] - r.series.t[0];
-  const auto width = static_cast<std::size_t>(std::lround(kSmooth / dt));
+  const auto width = static_cast<std::size_t>(std::lround(k_smooth / dt));
   const verification::ReplicaSeries series{&r.series.R, static_cast<std::size_t>(replicas), 0,
                                            records};
   const std::size_t late = records - records / 5;
@@ -204,13 +204,13 @@ Life measure(ClaimCheck& check, const Scene& scene, NodeIndex budget_cap, int re
         return verification::half_way_passage(mean, t0, dt, width,
                                               verification::window_mean(mean, late, records));
       },
-      kBootstrap, seed);
+      k_bootstrap, seed);
   life.to_eq = verification::bootstrap_passage(
       series,
       [&](const std::vector<double>& mean) {
         return verification::half_way_passage(mean, t0, dt, width, R_th);
       },
-      kBootstrap, seed);
+      k_bootstrap, seed);
   std::vector<int> all(static_cast<std::size_t>(replicas));
   for (int b = 0; b < replicas; ++b) all[static_cast<std::size_t>(b)] = b;
   const std::vector<double> mean = verification::replica_mean(series, all);
@@ -229,7 +229,7 @@ Life measure(ClaimCheck& check, const Scene& scene, NodeIndex budget_cap, int re
       "%.1e, %zu replicas, %.0f s\n",
       scene.name().c_str(), life.degree, life.lambda, life.K, life.initial, life.late, life.R_th,
       life.life.time, life.life.se, life.to_eq.time, life.to_eq.se, life.T, life.life.passed,
-      life.to_eq.passed, kBootstrap, life.energy_error, p.replicas.size(), r.integration_seconds);
+      life.to_eq.passed, k_bootstrap, life.energy_error, p.replicas.size(), r.integration_seconds);
   return life;
 }
 
@@ -278,7 +278,7 @@ struct Plan {
   std::vector<NodeIndex> network_sizes, complete_sizes, degrees;
   NodeIndex sweep_n = 0;
   NodeIndex budget_cap = 0;           ///< the networks' T stops growing past K_N's at this N
-  int complete_replicas = kReplicas;  ///< K_N's lives spread most (header: the outlives check)
+  int complete_replicas = k_replicas;  ///< K_N's lives spread most (header: the outlives check)
 };
 
 // The life of (family, n, d), measured once: the N and d sweeps share their common scenes.
@@ -287,17 +287,17 @@ void life_of(ClaimCheck& check, std::deque<Life>& lives, const Plan& plan, Famil
   if (family == Family::complete) d = n - 1;
   for (const Life& l : lives)
     if (l.family == family && l.n == n && l.d == d) return;
-  const int replicas = family == Family::complete ? plan.complete_replicas : kReplicas;
+  const int replicas = family == Family::complete ? plan.complete_replicas : k_replicas;
   lives.push_back(measure(check, *make_scene(family, n, d), plan.budget_cap, replicas));
   const Life& l = lives.back();
   const std::string name = scene_name(family, n, d);
   check.holds(name + ": the QSS relaxes within T (half way to R_th, every resample)",
               std::isfinite(l.to_eq.time) && std::isfinite(l.life.time) &&
-                  l.to_eq.passed == kBootstrap && l.life.passed == kBootstrap,
+                  l.to_eq.passed == k_bootstrap && l.life.passed == k_bootstrap,
               "passage to R_th " + ClaimCheck::format(l.to_eq.time) + ", life " +
                   ClaimCheck::format(l.life.time) + " (T = " + ClaimCheck::format(l.T) + "); " +
                   std::to_string(l.to_eq.passed) + " and " + std::to_string(l.life.passed) +
-                  " of " + std::to_string(kBootstrap) + " bootstrap resamples passed");
+                  " of " + std::to_string(k_bootstrap) + " bootstrap resamples passed");
   check.holds(name + ": every eq:rSigmaBesselMain solve converged", l.converged,
               "relative residual <= 1e-10");
   check.report(name + ": late <R> (last fifth) vs R_th(E, P)", l.late, l.R_th,
@@ -315,10 +315,10 @@ int main(int argc, char** argv) {
   const Plan plan =
       check.full()
           ? Plan{{200, 400, 800, 1600, 3200}, {200, 400, 800}, {20, 50, 100, 200}, 400, 400, 64}
-          : Plan{{100, 200, 400}, {100, 200, 400}, {20, 50, 100}, 200, 200, kReplicas};
+          : Plan{{100, 200, 400}, {100, 200, 400}, {20, 50, 100}, 200, 200, k_replicas};
   std::deque<Life> lives;
   for (const Family f : {Family::regular, Family::er}) {
-    for (const NodeIndex n : plan.network_sizes) life_of(check, lives, plan, f, n, kSweepDegree);
+    for (const NodeIndex n : plan.network_sizes) life_of(check, lives, plan, f, n, k_sweep_degree);
     for (const NodeIndex d : plan.degrees) life_of(check, lives, plan, f, plan.sweep_n, d);
   }
   for (const NodeIndex n : plan.complete_sizes) life_of(check, lives, plan, Family::complete, n, 0);
@@ -333,7 +333,7 @@ int main(int argc, char** argv) {
   for (const Family f : {Family::regular, Family::er}) {
     const std::string fam = family_name(f);
     const auto by_n = select(lives, [&](const Life& l) {
-      return l.family == f && l.d == kSweepDegree &&
+      return l.family == f && l.d == k_sweep_degree &&
              std::count(plan.network_sizes.begin(), plan.network_sizes.end(), l.n) > 0;
     });
     const verification::PowerLaw n_fit = fit(by_n, false);
@@ -409,6 +409,6 @@ int main(int argc, char** argv) {
              {"K_N log prefactor", "K_N vs N", "K_N vs N se", "RR vs N", "RR vs N se", "RR vs d",
               "RR vs d se", "ER vs N", "ER vs N se", "ER vs d", "ER vs d se"});
   check.data("plan", {{"N of the d sweep", static_cast<double>(plan.sweep_n)},
-                      {"d of the N sweep", static_cast<double>(kSweepDegree)}});
+                      {"d of the N sweep", static_cast<double>(k_sweep_degree)}});
   return check.exit_code();
 }

@@ -322,7 +322,7 @@ std::vector<double> point_rows(const std::vector<double>& x, const SimulationPar
   return table;
 }
 
-const std::vector<std::string> kPointColumns{
+const std::vector<std::string> k_point_columns{
     "K/K_c", "K", "R", "SEM", "replica sd", "theory (E, P)", "theory (sigma0)", "G sqrt(dK/K_c)"};
 
 // Step 3 for one panel: the restart-each-K points and the sweep, the theory per replica, the
@@ -358,7 +358,7 @@ void check_panel(ClaimCheck& check, const Panel& panel, const Scale& sc) {
       check_sweep_continues(check, name, x, p, sim, floor);
     }
     check.data(panel.name + (sweep ? "_sweep" : "_points"), point_rows(x, p, st, G), x.size(),
-               kPointColumns);
+               k_point_columns);
   }
   // The theory curve on a fine grid (nominal sigma0, c0 = 0: the paper's solid line).
   std::vector<double> Ks, curve;

@@ -57,8 +57,8 @@ using verification::ClaimCheck;
 
 namespace {
 
-constexpr double kSigma0 = 0.35;
-constexpr double kTolerance = 1e-10;
+constexpr double k_sigma0 = 0.35;
+constexpr double k_tolerance = 1e-10;
 const double k_eps[] = {1.0, 0.1, 0.01, 1e-3, 1e-4};
 
 struct Curve {
@@ -78,18 +78,18 @@ Curve measure(const std::string& name, const Network& net) {
   PerronOptions po;
   po.second_eigenvalue = true;
   const PerronResult perron = perron_eigenpair(d, po);
-  const double Kc = critical_coupling(kSigma0, net.size(), perron.lambda);
-  const SelfConsistentSystem system(net, perron.lambda, kSigma0, 0.0, perron.u);
+  const double Kc = critical_coupling(k_sigma0, net.size(), perron.lambda);
+  const SelfConsistentSystem system(net, perron.lambda, k_sigma0, 0.0, perron.u);
   std::printf("  INFO  %s: N = %d, lambda = %.3f, lambda_2 = %.3f\n", name.c_str(), net.size(),
               perron.lambda, perron.lambda2);
   Curve c;
   for (const double eps : k_eps) {
     SelfConsistentOptions fast;
-    fast.tolerance = kTolerance;
+    fast.tolerance = k_tolerance;
     SelfConsistentOptions plain = fast;
     plain.anderson_memory = 0;
     plain.damping = 1.0;
-    plain.max_iterations = static_cast<int>(4.0 * std::log(1.0 / kTolerance) / (2.0 * eps)) + 200;
+    plain.max_iterations = static_cast<int>(4.0 * std::log(1.0 / k_tolerance) / (2.0 * eps)) + 200;
     const SelfConsistentSolution a = system.solve((1.0 + eps) * Kc, fast);
     const SelfConsistentSolution p = system.solve((1.0 + eps) * Kc, plain);
     c.eps.push_back(eps);
@@ -196,7 +196,7 @@ int main(int argc, char** argv) {
     for (std::size_t k = 0; k < std::size(k_eps); ++k) {
       const double a = curves[i].R_accelerated[k], p = curves[i].R_plain[k];
       if (!std::isfinite(a) || !std::isfinite(p)) continue;
-      worst = std::max(worst, std::abs(a - p) / (10.0 * kTolerance / k_eps[k] * a));
+      worst = std::max(worst, std::abs(a - p) / (10.0 * k_tolerance / k_eps[k] * a));
       ++points;
     }
     check.holds(names[i] + ": accelerated and plain R agree where both converge",
@@ -212,6 +212,6 @@ int main(int argc, char** argv) {
   std::string labels = "[";
   for (const std::string& s : names) labels += (labels.size() > 1 ? ", \"" : "\"") + s + "\"";
   check.note("networks", labels + "]");
-  check.data("constants", {{"tolerance", kTolerance}, {"N", static_cast<double>(n)}});
+  check.data("constants", {{"tolerance", k_tolerance}, {"N", static_cast<double>(n)}});
   return check.exit_code();
 }

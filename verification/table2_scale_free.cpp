@@ -130,10 +130,10 @@ void check_rewiring(verification::ClaimCheck& check, std::uint64_t seed) {
   const double paper_rho[] = {0.97, 1.09}, paper_lambda[] = {364, 459};
   for (int k = 0; k < 2; ++k) {
     check.report("rewired network " + std::to_string(k + 1) + ": rho",
-                 rewired[static_cast<std::size_t>(2 * k + 2)], paper_rho[k],
+                 rewired[2 * static_cast<std::size_t>(k) + 2], paper_rho[k],
                  "(not reachable: swaps saturate, see header)");
     check.report("rewired network " + std::to_string(k + 1) + ": lambda",
-                 rewired[static_cast<std::size_t>(2 * k + 3)], paper_lambda[k],
+                 rewired[2 * static_cast<std::size_t>(k) + 3], paper_lambda[k],
                  "(at our lower rho)");
   }
   std::printf(

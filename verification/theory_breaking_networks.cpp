@@ -54,7 +54,7 @@ using verification::ClaimCheck;
 
 namespace {
 
-constexpr double kSigma0 = 0.35;
+constexpr double k_sigma0 = 0.35;
 const double k_x[] = {1.5, 3.0};
 
 struct Scale {
@@ -85,8 +85,8 @@ bool mentions(const std::vector<std::string>& warnings, const std::string& text)
 PerronResult check_detection(ClaimCheck& check, const Case& c, const DistributedNetwork& d) {
   PerronOptions options;
   options.second_eigenvalue = true;
-  const PerronResult perron = perron_eigenpair(d, options);
-  const NetworkSummary s = summarise(c.net, perron, kSigma0);
+  PerronResult perron = perron_eigenpair(d, options);
+  const NetworkSummary s = summarise(c.net, perron, k_sigma0);
   std::string all;
   for (const auto& w : s.warnings) all += (all.empty() ? "" : "; ") + w;
   const bool ok =
@@ -101,7 +101,7 @@ PerronResult check_detection(ClaimCheck& check, const Case& c, const Distributed
 // Step 3: the simulation and the theory at each replica's (E, P).
 std::vector<double> measure_gap(ClaimCheck& check, const Case& c, const DistributedNetwork& d,
                                 const PerronResult& perron, const Scale& sc) {
-  const double Kc = critical_coupling(kSigma0, c.net.size(), perron.lambda);
+  const double Kc = critical_coupling(k_sigma0, c.net.size(), perron.lambda);
   SimulationParameters p;
   p.h = sc.h;
   p.duration = sc.duration;
@@ -109,7 +109,7 @@ std::vector<double> measure_gap(ClaimCheck& check, const Case& c, const Distribu
   for (const double x : k_x) p.K.push_back(x * Kc);
   p.replicas.clear();
   for (int b = 0; b < sc.replicas; ++b)
-    p.replicas.push_back({6.0, kSigma0, static_cast<std::uint64_t>(300 + b)});
+    p.replicas.push_back({6.0, k_sigma0, static_cast<std::uint64_t>(300 + b)});
   p.record_stride = 100;
   p.continue_state = false;
   p.K_across_replicas = true;  // both K in one pass (replica_lanes.hpp: the same bits)
@@ -123,8 +123,8 @@ std::vector<double> measure_gap(ClaimCheck& check, const Case& c, const Distribu
     double mean = 0.0, sem2 = 0.0, theory = 0.0;
     for (std::size_t b = 0; b < B; ++b) {
       const double mu0 = verification::incoherent_variance(sim, p.K[k], b, n);
-      const double c0 = (kSigma0 * kSigma0 - mu0) / p.K[k];
-      const SelfConsistentSystem system(c.net, perron.lambda, kSigma0, c0, perron.u);
+      const double c0 = (k_sigma0 * k_sigma0 - mu0) / p.K[k];
+      const SelfConsistentSystem system(c.net, perron.lambda, k_sigma0, c0, perron.u);
       const SelfConsistentSolution sol = system.solve(p.K[k]);
       theory += (sol.status == SolveStatus::failed ? NAN : sol.R) / static_cast<double>(B);
       mean += sim.points[k].R_mean[b] / static_cast<double>(B);

@@ -67,9 +67,9 @@ using verification::ClaimCheck;
 
 namespace {
 
-constexpr double kSigma0 = 0.35;
-constexpr double kOmega = 6.0;
-constexpr int kGrowthReplicas = 3;
+constexpr double k_sigma0 = 0.35;
+constexpr double k_omega = 6.0;
+constexpr int k_growth_replicas = 3;
 
 // A network with its rows, force, degrees and lambda (support/network_scene.hpp), and a name.
 struct Graph : verification::NetworkScene {
@@ -100,9 +100,9 @@ SimulationResult run(ClaimCheck& check, const Graph& g, MomentumDistribution mom
   p.record_stride = stride;
   p.replicas.clear();
   for (int b = 0; b < replicas; ++b) {
-    p.replicas.push_back({kOmega, kSigma0, static_cast<std::uint64_t>(21 + b), momenta});
+    p.replicas.push_back({k_omega, k_sigma0, static_cast<std::uint64_t>(21 + b), momenta});
   }
-  const SimulationResult r = simulate(*g.rows, g.degrees, *g.force, p);
+  SimulationResult r = simulate(*g.rows, g.degrees, *g.force, p);
   verification::account(check, p, r);
   return r;
 }
@@ -155,7 +155,7 @@ struct ThresholdRuns {
 void threshold(ClaimCheck& check, const Graph& small, const Graph& large, const ThresholdRuns& how,
                std::vector<double>& table) {
   const auto Kc = [](const Graph& g) {
-    return critical_coupling(MomentumDistribution::waterbag, kSigma0, g.n, g.lambda);
+    return critical_coupling(MomentumDistribution::waterbag, k_sigma0, g.n, g.lambda);
   };
   const auto late = [&](const Graph& g, MomentumDistribution m, double kappa) {
     return late_levels(run(check, g, m, kappa * Kc(g), how.duration, how.replicas, how.stride));
@@ -209,15 +209,15 @@ void threshold(ClaimCheck& check, const Graph& small, const Graph& large, const 
 
 // Step B: growth rates on one network.
 void growth(ClaimCheck& check, const Graph& g, std::vector<double>& table) {
-  const double Kc = critical_coupling(MomentumDistribution::waterbag, kSigma0, g.n, g.lambda);
-  const double t99 = verification::t_multiplier_99(kGrowthReplicas);
+  const double Kc = critical_coupling(MomentumDistribution::waterbag, k_sigma0, g.n, g.lambda);
+  const double t99 = verification::t_multiplier_99(k_growth_replicas);
   for (const double kappa : {1.5, 2.0, 3.0, 4.0}) {
-    const double gamma = growth_rate(MomentumDistribution::waterbag, kappa, kSigma0);
+    const double gamma = growth_rate(MomentumDistribution::waterbag, kappa, k_sigma0);
     const SimulationResult r = run(check, g, MomentumDistribution::waterbag, kappa * Kc,
-                                   10.0 / gamma + 10.0, kGrowthReplicas);
+                                   10.0 / gamma + 10.0, k_growth_replicas);
     std::vector<double> slopes, later;
     double reference = 0.0, efolds = INFINITY;
-    for (std::size_t b = 0; b < kGrowthReplicas; ++b) {
+    for (std::size_t b = 0; b < k_growth_replicas; ++b) {
       // The mode grows from the floor itself (support/growth_fit.hpp): the window starts at
       // gamma t = 3; the same fit from gamma t = 4 measures what the start still costs.
       const std::vector<double> R = replica_series(r, b);
@@ -226,13 +226,13 @@ void growth(ClaimCheck& check, const Graph& g, std::vector<double>& table) {
       slopes.push_back(f.usable ? f.slope : NAN);
       later.push_back(f4.usable ? f4.slope : NAN);
       efolds = std::min(efolds, f.efolds);
-      const InitialCondition ic{kOmega, kSigma0, static_cast<std::uint64_t>(21 + b),
+      const InitialCondition ic{k_omega, k_sigma0, static_cast<std::uint64_t>(21 + b),
                                 MomentumDistribution::waterbag};
       reference += verification::sample_growth_rate(g.n, kappa * Kc, g.lambda, ic, gamma) /
-                   static_cast<double>(kGrowthReplicas);
+                   static_cast<double>(k_growth_replicas);
     }
     const auto ms = verification::mean_sd(slopes);
-    const double sem = ms.sd / std::sqrt(static_cast<double>(kGrowthReplicas));
+    const double sem = ms.sd / std::sqrt(static_cast<double>(k_growth_replicas));
     const double start_shift = std::abs(verification::mean_sd(later).mean - ms.mean);
     std::printf(
         "  INFO  %s, K = %g K_c^wb: gamma %.4f (closed form), %.4f (samples), fitted "

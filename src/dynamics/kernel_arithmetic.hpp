@@ -16,7 +16,7 @@
 // on the hmfnet_cuda target). nvcc then emits mul.rn and add.rn, whose explicit rounding forbids
 // ptxas and the driver's PTX JIT to fuse them (PTX ISA, "add", "mul"); checked on the PTX of
 // dynamics/cuda/device_arithmetic_check.cu: no fma.rn.f64 from these functions, 17 from CUDA's
-// own sincos (the path beyond kReducedRange), against 33 with nvcc's default. The flag and not
+// own sincos (the path beyond k_reduced_range), against 33 with nvcc's default. The flag and not
 // __dmul_rn / __dadd_rn, because the sincos below is one template shared with sincos.cpp's
 // vector lanes, whose operators are the arithmetic. nvcc has no macro that reveals --fmad, so the
 // gpu test is what catches a CUDA file compiled without it.
@@ -41,33 +41,33 @@ namespace hmfnet {
 
 namespace sincos_constants {
 
-// pi/2 = kPio2_0 + kPio2_1 + kPio2_2 + kPio2_3 to ~2^-135; the first three have 26 significant
+// pi/2 = k_pio2_0 + k_pio2_1 + k_pio2_2 + k_pio2_3 to ~2^-135; the first three have 26 significant
 // bits, so q kPio2_i is exact for |q| < 2^27 (computed with mpmath at 300 bits). Separate scalars
 // rather than an array: a constexpr array cannot be indexed in CUDA device code.
-constexpr double kPio2_0 = 0x1.921fb50000000p+0;
-constexpr double kPio2_1 = 0x1.110b460000000p-26;
-constexpr double kPio2_2 = 0x1.1a62630000000p-54;
-constexpr double kPio2_3 = 0x1.8a2e03707344ap-81;
-constexpr double kTwoOverPi = 0x1.45f306dc9c883p-1;
+constexpr double k_pio2_0 = 0x1.921fb50000000p+0;
+constexpr double k_pio2_1 = 0x1.110b460000000p-26;
+constexpr double k_pio2_2 = 0x1.1a62630000000p-54;
+constexpr double k_pio2_3 = 0x1.8a2e03707344ap-81;
+constexpr double k_two_over_pi = 0x1.45f306dc9c883p-1;
 // Adding and subtracting 1.5 2^52 rounds a double below 2^51 to the nearest integer (ties to
 // even), and the sum's low mantissa bits then hold that integer in two's complement.
-constexpr double kRoundShift = 0x1.8p52;
-constexpr std::uint64_t kAbsMask = 0x7fffffffffffffffULL;
-constexpr std::uint64_t kSignBit = 0x8000000000000000ULL;
+constexpr double k_round_shift = 0x1.8p52;
+constexpr std::uint64_t k_abs_mask = 0x7fffffffffffffffULL;
+constexpr std::uint64_t k_sign_bit = 0x8000000000000000ULL;
 // Minimax polynomials on [-pi/4, pi/4] (Cephes' sin.c coefficients):
 // sin r = r + r^3 S(r^2), cos r = 1 - r^2 / 2 + r^4 C(r^2), highest degree first.
-constexpr double kSin0 = 1.58962301576546568060e-10;
-constexpr double kSin1 = -2.50507477628578072866e-8;
-constexpr double kSin2 = 2.75573136213857245213e-6;
-constexpr double kSin3 = -1.98412698295895385996e-4;
-constexpr double kSin4 = 8.33333333332211858878e-3;
-constexpr double kSin5 = -1.66666666666666307295e-1;
-constexpr double kCos0 = -1.13585365213876817300e-11;
-constexpr double kCos1 = 2.08757008419747316778e-9;
-constexpr double kCos2 = -2.75573141792967388112e-7;
-constexpr double kCos3 = 2.48015872888517045348e-5;
-constexpr double kCos4 = -1.38888888888730564116e-3;
-constexpr double kCos5 = 4.16666666666665929218e-2;
+constexpr double k_sin0 = 1.58962301576546568060e-10;
+constexpr double k_sin1 = -2.50507477628578072866e-8;
+constexpr double k_sin2 = 2.75573136213857245213e-6;
+constexpr double k_sin3 = -1.98412698295895385996e-4;
+constexpr double k_sin4 = 8.33333333332211858878e-3;
+constexpr double k_sin5 = -1.66666666666666307295e-1;
+constexpr double k_cos0 = -1.13585365213876817300e-11;
+constexpr double k_cos1 = 2.08757008419747316778e-9;
+constexpr double k_cos2 = -2.75573141792967388112e-7;
+constexpr double k_cos3 = 2.48015872888517045348e-5;
+constexpr double k_cos4 = -1.38888888888730564116e-3;
+constexpr double k_cos5 = 4.16666666666665929218e-2;
 
 }  // namespace sincos_constants
 
@@ -101,8 +101,8 @@ struct ScalarLane {
 
 /// cos and sin of each lane's angle (Lanes: ScalarLane, or sincos.cpp's vectors): Cody-Waite
 /// reduction by pi/2 in four parts with the rounding of the reduced angle carried, then Cephes'
-/// polynomials; below 1 ulp up to |x| = kReducedRange (tests/dynamics/test_sincos.cpp). A lane
-/// whose |x| exceeds kReducedRange (or is not finite) computes sin 0 instead; the caller
+/// polynomials; below 1 ulp up to |x| = k_reduced_range (tests/dynamics/test_sincos.cpp). A lane
+/// whose |x| exceeds k_reduced_range (or is not finite) computes sin 0 instead; the caller
 /// overwrites it (sincos_block in sincos.cpp, sincos_one below).
 template <typename Lanes>
 HMFNET_HD_INLINE void sincos_lanes(const typename Lanes::Real& angle, typename Lanes::Real& c,
@@ -110,30 +110,30 @@ HMFNET_HD_INLINE void sincos_lanes(const typename Lanes::Real& angle, typename L
   using namespace sincos_constants;
   using Real = typename Lanes::Real;
   using Bits = typename Lanes::Bits;
-  const std::uint64_t range_bits = ScalarLane::bits(kReducedRange);
+  const std::uint64_t range_bits = ScalarLane::bits(k_reduced_range);
   // Integer comparison of |x|'s bits (a NaN's are above infinity's): a floating-point one may
   // trap and then stays a branch.
-  const Bits inside = Lanes::at_most(Lanes::bits(angle) & kAbsMask, range_bits);
+  const Bits inside = Lanes::at_most(Lanes::bits(angle) & k_abs_mask, range_bits);
   const Real x = Lanes::real(Lanes::bits(angle) & inside);
-  const Real t = x * kTwoOverPi + kRoundShift;
-  const Real q = t - kRoundShift;
+  const Real t = x * k_two_over_pi + k_round_shift;
+  const Real q = t - k_round_shift;
   const Bits j = Lanes::bits(t);  // q mod 4 = j & 3
-  // r + r_lo = x - q pi/2 to ~2^-105 |x|: x - q kPio2_0 and the next subtraction are exact;
-  // b = q kPio2_2 + q kPio2_3 with its rounding error eb (Fast2Sum, |p2| >= |p3|); r = a - b
+  // r + r_lo = x - q pi/2 to ~2^-105 |x|: x - q k_pio2_0 and the next subtraction are exact;
+  // b = q k_pio2_2 + q k_pio2_3 with its rounding error eb (Fast2Sum, |p2| >= |p3|); r = a - b
   // rounded once, and r_lo the rounding of r (Fast2Sum: exact because a is a multiple of a unit
   // at least ulp(b), also where |a| < |b|) less eb. Without r_lo the rounding of r costs 1 ulp
   // where |sin| or |cos| is just below 1/2 and |r| just above (measured 1.5 ulp); without eb,
   // angles within ~10^-10 of a multiple of pi/2 (|r| tiny) lose up to thousands of ulp.
-  const Real a = (x - q * kPio2_0) - q * kPio2_1;
-  const Real p2 = q * kPio2_2;
-  const Real p3 = q * kPio2_3;
+  const Real a = (x - q * k_pio2_0) - q * k_pio2_1;
+  const Real p2 = q * k_pio2_2;
+  const Real p3 = q * k_pio2_3;
   const Real b = p2 + p3;
   const Real eb = p3 - (b - p2);
   const Real r = a - b;
   const Real r_lo = ((a - r) - b) - eb;
   const Real z = r * r;
-  const Real ps = ((((kSin0 * z + kSin1) * z + kSin2) * z + kSin3) * z + kSin4) * z + kSin5;
-  const Real pc = ((((kCos0 * z + kCos1) * z + kCos2) * z + kCos3) * z + kCos4) * z + kCos5;
+  const Real ps = ((((k_sin0 * z + k_sin1) * z + k_sin2) * z + k_sin3) * z + k_sin4) * z + k_sin5;
+  const Real pc = ((((k_cos0 * z + k_cos1) * z + k_cos2) * z + k_cos3) * z + k_cos4) * z + k_cos5;
   // sin(r + r_lo) = sin r + r_lo cos r, cos(r + r_lo) = cos r - r_lo sin r, to first order in
   // r_lo (|r_lo| <= 2^-54 |r|); cos r = w + ((1 - w) - z / 2 + z^2 C) with w = 1 - z / 2: the
   // parenthesis recovers the rounding of w (fdlibm's kernel_cos).
@@ -146,16 +146,16 @@ HMFNET_HD_INLINE void sincos_lanes(const typename Lanes::Real& angle, typename L
   const Bits swap = 0 - (j & 1U);
   const Bits sin_bits = (Lanes::bits(sin_r) & ~swap) | (Lanes::bits(cos_r) & swap);
   const Bits cos_bits = (Lanes::bits(cos_r) & ~swap) | (Lanes::bits(sin_r) & swap);
-  s = Lanes::real(sin_bits ^ ((j << 62) & kSignBit));
-  c = Lanes::real(cos_bits ^ (((j + 1U) << 62) & kSignBit));
+  s = Lanes::real(sin_bits ^ ((j << 62) & k_sign_bit));
+  c = Lanes::real(cos_bits ^ (((j + 1U) << 62) & k_sign_bit));
 }
 
-/// Whether sincos_lanes computes x itself: |x| <= kReducedRange (false for NaN).
+/// Whether sincos_lanes computes x itself: |x| <= k_reduced_range (false for NaN).
 HMFNET_HD_INLINE bool sincos_reduces(double x) {
-  return (ScalarLane::bits(x) & sincos_constants::kAbsMask) <= ScalarLane::bits(kReducedRange);
+  return (ScalarLane::bits(x) & sincos_constants::k_abs_mask) <= ScalarLane::bits(k_reduced_range);
 }
 
-/// c = cos x, s = sin x with the bits of sincos_interleaved for |x| <= kReducedRange (the same
+/// c = cos x, s = sin x with the bits of sincos_interleaved for |x| <= k_reduced_range (the same
 /// template). Beyond that, and for non-finite x, the C library's sincos: on the host glibc's, as
 /// sincos_interleaved calls it (the same bits again); on a device CUDA's, which is not glibc's:
 /// within CUDA's documented 2 ulp for sin and cos instead of the CPU's bits (NaN for inf and NaN,

@@ -29,10 +29,10 @@ class OrderedColumnSums {
   // partial(block), formed exactly as sum() forms them (from 0, rows first_row(block) ..
   // first_row(block + 1) - 1 in order, each column on its own), then add_blocks(out) on the
   // master thread after that loop's barrier. The same bits as sum() over the stored values.
-  static constexpr std::size_t kBlockRows = 2048;
-  std::size_t blocks() const { return (m_rows + kBlockRows - 1) / kBlockRows; }
+  static constexpr std::size_t k_block_rows = 2048;
+  std::size_t blocks() const { return (m_rows + k_block_rows - 1) / k_block_rows; }
   std::size_t first_row(std::size_t block) const {
-    return block * kBlockRows < m_rows ? block * kBlockRows : m_rows;
+    return block * k_block_rows < m_rows ? block * k_block_rows : m_rows;
   }
   double* partial(std::size_t block) { return m_partial.data() + block * m_width; }
   /// out[b] = the block sums of column b added in block order. Master thread (or outside a team).

@@ -91,19 +91,19 @@ namespace {
 // sums (which the compiler must assume the inputs may alias). The lanes are independent sums,
 // so how the replicas are grouped changes no bit; groups share a block out between threads when
 // there are few blocks (N = 2000 is one block of the ordered sums).
-constexpr std::size_t kGroup = 8;
+constexpr std::size_t k_group = 8;
 
 // One work item: rows [r0, r1) of block `block` of the ordered sums, replicas [b0, b0 + nb).
 struct Item {
   std::size_t block, r0, r1, b0, nb;
 };
 
-std::size_t groups(std::size_t w) { return (w + kGroup - 1) / kGroup; }
+std::size_t groups(std::size_t w) { return (w + k_group - 1) / k_group; }
 
 // Work item `i` of the blocks of `sums` x the replica groups.
 Item item(const OrderedColumnSums& sums, std::size_t i, std::size_t w) {
-  const std::size_t block = i / groups(w), b0 = i % groups(w) * kGroup;
-  return {block, sums.first_row(block), sums.first_row(block + 1), b0, std::min(kGroup, w - b0)};
+  const std::size_t block = i / groups(w), b0 = i % groups(w) * k_group;
+  return {block, sums.first_row(block), sums.first_row(block + 1), b0, std::min(k_group, w - b0)};
 }
 
 // kernel(std::integral_constant<std::size_t, NB>) with the item's replica count fixed at compile
@@ -112,8 +112,8 @@ template <typename Kernel>
 void with_group_size(const Item& it, std::size_t w, Kernel&& kernel) {
   if (w == 1) {
     kernel(std::integral_constant<std::size_t, 1>{});
-  } else if (it.nb == kGroup) {
-    kernel(std::integral_constant<std::size_t, kGroup>{});
+  } else if (it.nb == k_group) {
+    kernel(std::integral_constant<std::size_t, k_group>{});
   } else {
     kernel(std::integral_constant<std::size_t, 0>{});
   }
@@ -125,7 +125,7 @@ void with_group_size(const Item& it, std::size_t w, Kernel&& kernel) {
 template <std::size_t NB>
 void z_block(const Item& it, std::size_t w, const double* a, const double* cs, double* out) {
   const std::size_t nb = NB > 0 ? NB : it.nb;
-  double acc[2 * (NB > 0 ? NB : kGroup)] = {};
+  double acc[2 * (NB > 0 ? NB : k_group)] = {};
   for (std::size_t r = it.r0; r < it.r1; ++r) {
     const double* q = cs + 2 * (r * w + it.b0);
     for (std::size_t j = 0; j < 2 * nb; ++j) acc[j] += a[r] * q[j];
@@ -196,11 +196,11 @@ inline void field_pair(const FieldArgs& f, double a, std::size_t k, std::size_t 
 template <std::size_t NB>
 void field_block(const Item& it, std::size_t w, const FieldArgs& f, double* out) {
   const std::size_t nb = NB > 0 ? NB : it.nb;
-  double acc[2 * (NB > 0 ? NB : kGroup)] = {};
+  double acc[2 * (NB > 0 ? NB : k_group)] = {};
   std::size_t pairs = 0;
 #if defined(__SSE2__)
   pairs = nb / 2;
-  __m128d order[kGroup / 2], coupling[kGroup / 2];
+  __m128d order[k_group / 2], coupling[k_group / 2];
   for (std::size_t p = 0; p < pairs; ++p) order[p] = coupling[p] = _mm_setzero_pd();
 #endif
   for (std::size_t r = it.r0; r < it.r1; ++r) {

@@ -41,7 +41,7 @@ template <typename D, typename U>
 struct VectorLanes {
   using Real = D;
   using Bits = U;
-  static constexpr std::size_t kLanes = sizeof(D) / sizeof(double);
+  static constexpr std::size_t k_lanes = sizeof(D) / sizeof(double);
   static HMFNET_INLINE Bits bits(const Real& x) { return bits_as<Bits>(x); }
   static HMFNET_INLINE Real real(const Bits& b) { return bits_as<Real>(b); }
   // A vector comparison gives -1 (all ones) or 0 per lane.
@@ -72,8 +72,8 @@ template <typename Lanes>
 HMFNET_INLINE void sincos_block(const double* x, std::size_t n, double* cs) {
   using Real = typename Lanes::Real;
   using Bits = typename Lanes::Bits;
-  constexpr std::size_t lanes = Lanes::kLanes;
-  const std::uint64_t range_bits = ScalarLane::bits(kReducedRange);
+  constexpr std::size_t lanes = Lanes::k_lanes;
+  const std::uint64_t range_bits = ScalarLane::bits(k_reduced_range);
   // All ones in a lane while every angle it saw was within the reduced range (the mask
   // sincos_lanes forms): the C library's pass below runs only when one was not.
   Bits inside = ~Bits{};
@@ -84,14 +84,14 @@ HMFNET_INLINE void sincos_block(const double* x, std::size_t n, double* cs) {
     Real v;
     std::memcpy(&v, x + k, sizeof v);
     sincos_lanes<Lanes>(v, c, s);
-    inside &= Lanes::at_most(Lanes::bits(v) & sincos_constants::kAbsMask, range_bits);
+    inside &= Lanes::at_most(Lanes::bits(v) & sincos_constants::k_abs_mask, range_bits);
     store_interleaved(c, s, cs + 2 * k);
   }
   if (body < n) {
     Real v = Real{};
     std::memcpy(&v, x + body, (n - body) * sizeof(double));
     sincos_lanes<Lanes>(v, c, s);
-    inside &= Lanes::at_most(Lanes::bits(v) & sincos_constants::kAbsMask, range_bits);
+    inside &= Lanes::at_most(Lanes::bits(v) & sincos_constants::k_abs_mask, range_bits);
     double tail[2 * lanes];
     store_interleaved(c, s, tail);
     std::memcpy(cs + 2 * body, tail, 2 * (n - body) * sizeof(double));
@@ -209,12 +209,12 @@ void sincos_interleaved_baseline(const double* x, std::size_t n, double* cs) {
 void sincos_interleaved_team(const double* x, std::size_t n, double* cs) {
   // Blocks of 512 angles (8 KiB of output): long enough for the vector loop, short enough to
   // share out.
-  constexpr std::size_t kBlock = 512;
-  const std::size_t blocks = (n + kBlock - 1) / kBlock;
+  constexpr std::size_t k_block = 512;
+  const std::size_t blocks = (n + k_block - 1) / k_block;
 #pragma omp for schedule(static)
   for (std::size_t i = 0; i < blocks; ++i) {
-    const std::size_t begin = i * kBlock;
-    const std::size_t count = begin + kBlock <= n ? kBlock : n - begin;
+    const std::size_t begin = i * k_block;
+    const std::size_t count = begin + k_block <= n ? k_block : n - begin;
     sincos_interleaved(x + begin, count, cs + 2 * begin);
   }
 }

@@ -10,13 +10,13 @@
 // eight lanes in one AVX-512 register, chosen at run time): Cody-Waite reduction by pi/2 in four
 // parts with the rounding of the reduced angle carried, then minimax polynomials on [-pi/4, pi/4].
 // Its error is below 1 ulp up to |x| = 10^7, also at the doubles nearest multiples of pi/2
-// (tests/dynamics/ test_sincos.cpp); angles beyond kReducedRange, and non-finite ones, go to the C
+// (tests/dynamics/ test_sincos.cpp); angles beyond k_reduced_range, and non-finite ones, go to the C
 // library. The per-lane arithmetic is kernel_arithmetic.hpp's sincos_lanes, one template that these
 // vectors, the scalar sincos_one and a CUDA device instantiate alike. bench/ensemble_table.sh
 // prints its time per angle beside glibc's; bench/sincos_table.sh each version's beside SLEEF's and
 // numpy's (docs/performance.md "sincos").
 //
-// Reproducibility: for |x| <= kReducedRange an angle's [cos, sin] depends on its value only,
+// Reproducibility: for |x| <= k_reduced_range an angle's [cos, sin] depends on its value only,
 // never on where it sits in the array (vector body or padded tail), on the thread that computes
 // it or on the CPU: the same IEEE additions and multiplications in the same order in every lane
 // and in every instruction set, compiled without floating-point contraction
@@ -30,7 +30,7 @@ namespace hmfnet {
 
 // |x| up to which the four-part reduction keeps the reduced angle exact to ~2^-105 |x|: the
 // quadrant count q stays below 2^26, so q times each 26-bit part of pi/2 is exact.
-inline constexpr double kReducedRange = 1e7;
+inline constexpr double k_reduced_range = 1e7;
 
 /// The instruction sets sincos_interleaved has a version for, narrowest first: the x86-64
 /// baseline (SSE2, 4 lanes in two registers), AVX2 (4 lanes in one) and AVX-512F/DQ (8 lanes in

@@ -101,16 +101,16 @@ TEST_CASE("scalar sincos equals the vectorised one at the doubles nearest k pi/2
 
 TEST_CASE("scalar sincos equals the vectorised one beyond the reduced range and when not finite",
           "[kernel_arithmetic]") {
-  // Both sides of kReducedRange, the C library's range, and the values a lane mask must not let
+  // Both sides of k_reduced_range, the C library's range, and the values a lane mask must not let
   // through: infinities, NaNs of both signs, zeros and a subnormal. Each value is also placed at
   // every lane of the 4- and 8-lane vectors and in the padded tail after them (the mask is per
   // lane).
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const std::vector<double> special = {kReducedRange,
-                                       -kReducedRange,
-                                       std::nextafter(kReducedRange, INFINITY),
-                                       -std::nextafter(kReducedRange, INFINITY),
-                                       std::nextafter(kReducedRange, 0.0),
+  const std::vector<double> special = {k_reduced_range,
+                                       -k_reduced_range,
+                                       std::nextafter(k_reduced_range, INFINITY),
+                                       -std::nextafter(k_reduced_range, INFINITY),
+                                       std::nextafter(k_reduced_range, 0.0),
                                        -1e8,
                                        123456789.123,
                                        1e300,

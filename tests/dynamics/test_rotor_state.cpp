@@ -10,10 +10,10 @@ using namespace hmfnet;
 
 namespace {
 
-constexpr double kOmega = 6.0, kSigma0 = 0.35;
+constexpr double k_omega = 6.0, k_sigma0 = 0.35;
 
 InitialCondition waterbag(std::uint64_t seed) {
-  return {kOmega, kSigma0, seed, MomentumDistribution::waterbag};
+  return {k_omega, k_sigma0, seed, MomentumDistribution::waterbag};
 }
 
 }  // namespace
@@ -22,7 +22,7 @@ TEST_CASE("Water-bag momenta: inside omega +- sqrt(3) sigma0, mean omega, sd sig
           "[rotor_state]") {
   const NodeIndex n = 200000;
   const RotorState s = initial_state(0, n, {waterbag(3)});
-  const double D = std::sqrt(3.0) * kSigma0;
+  const double D = std::sqrt(3.0) * k_sigma0;
   double sum = 0.0, lo = INFINITY, hi = -INFINITY;
   for (const double p : s.p) {
     sum += p;
@@ -32,22 +32,22 @@ TEST_CASE("Water-bag momenta: inside omega +- sqrt(3) sigma0, mean omega, sd sig
   const double mean = sum / n;
   double var = 0.0;
   for (const double p : s.p) var += (p - mean) * (p - mean) / (n - 1);
-  REQUIRE(lo >= kOmega - D);
-  REQUIRE(hi < kOmega + D);
+  REQUIRE(lo >= k_omega - D);
+  REQUIRE(hi < k_omega + D);
   // Filled to the edges: the gap to each edge is of order D / N.
-  REQUIRE(lo < kOmega - D + 1e-3);
-  REQUIRE(hi > kOmega + D - 1e-3);
+  REQUIRE(lo < k_omega - D + 1e-3);
+  REQUIRE(hi > k_omega + D - 1e-3);
   // Tolerances: 4 standard errors. Mean: sigma0 / sqrt(N). Sample variance of a uniform:
   // sqrt((mu4 - sigma^4) / N) with mu4 = 9 sigma^4 / 5, i.e. sigma0^2 sqrt(0.8 / N).
-  REQUIRE(std::abs(mean - kOmega) < 4.0 * kSigma0 / std::sqrt(double(n)));
-  REQUIRE(std::abs(var - kSigma0 * kSigma0) < 4.0 * kSigma0 * kSigma0 * std::sqrt(0.8 / n));
+  REQUIRE(std::abs(mean - k_omega) < 4.0 * k_sigma0 / std::sqrt(double(n)));
+  REQUIRE(std::abs(var - k_sigma0 * k_sigma0) < 4.0 * k_sigma0 * k_sigma0 * std::sqrt(0.8 / n));
 }
 
 TEST_CASE("Initial states are seeded and independent of the row split [both distributions]",
           "[rotor_state]") {
   const NodeIndex n = 1000, cut = 377;
   for (const auto g : {MomentumDistribution::gaussian, MomentumDistribution::waterbag}) {
-    const InitialCondition a{kOmega, kSigma0, 11, g}, b{kOmega, kSigma0, 12, g};
+    const InitialCondition a{k_omega, k_sigma0, 11, g}, b{k_omega, k_sigma0, 12, g};
     const RotorState whole = initial_state(0, n, {a, b});
     REQUIRE(initial_state(0, n, {a, b}).p == whole.p);
     REQUIRE(initial_state(0, n, {b}).p != initial_state(0, n, {a}).p);
@@ -61,10 +61,10 @@ TEST_CASE("Initial states are seeded and independent of the row split [both dist
   }
   // The phases do not depend on the momentum distribution (theta is drawn first).
   REQUIRE(initial_state(0, n, {waterbag(5)}).theta ==
-          initial_state(0, n, {{kOmega, kSigma0, 5}}).theta);
+          initial_state(0, n, {{k_omega, k_sigma0, 5}}).theta);
 }
 
 TEST_CASE("A water-bag of zero width is refused naming sigma0", "[rotor_state]") {
-  REQUIRE_THROWS_WITH(initial_state(0, 10, {{kOmega, 0.0, 1, MomentumDistribution::waterbag}}),
+  REQUIRE_THROWS_WITH(initial_state(0, 10, {{k_omega, 0.0, 1, MomentumDistribution::waterbag}}),
                       Catch::Contains("sigma0") && Catch::Contains("water-bag"));
 }

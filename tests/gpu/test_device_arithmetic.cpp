@@ -2,11 +2,11 @@
 // for bit: a CUDA kernel (dynamics/cuda/device_arithmetic_check.cu) evaluates sincos, the kick
 // and the drift on device arrays, and every result is compared with the same function run here.
 // tests/dynamics/test_kernel_arithmetic.cpp ties these host functions to the CPU kernels, so
-// equal bits here mean the device reproduces the CPU. Beyond kReducedRange the device takes
+// equal bits here mean the device reproduces the CPU. Beyond k_reduced_range the device takes
 // CUDA's sincos, not glibc's: there only closeness is required.
 //
 // Runs where a CUDA device can run this build's code; elsewhere it prints why and exits with
-// kSkipped, which tests/gpu/CMakeLists.txt declares as CTest's SKIP_RETURN_CODE.
+// k_skipped, which tests/gpu/CMakeLists.txt declares as CTest's SKIP_RETURN_CODE.
 #define CATCH_CONFIG_RUNNER
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -32,7 +32,7 @@ using namespace hmfnet;
 
 namespace {
 
-constexpr int kSkipped = 77;
+constexpr int k_skipped = 77;
 
 std::uint64_t bits_of(double x) {
   std::uint64_t b = 0;
@@ -61,7 +61,7 @@ std::vector<double> check_angles() {
     }
   }
   const double inf = std::numeric_limits<double>::infinity();
-  for (const double v : {kReducedRange, std::nextafter(kReducedRange, inf), -1e8, 1e300, inf, -inf,
+  for (const double v : {k_reduced_range, std::nextafter(k_reduced_range, inf), -1e8, 1e300, inf, -inf,
                          std::numeric_limits<double>::quiet_NaN()})
     x.push_back(v);
   return x;
@@ -127,7 +127,7 @@ int main(int argc, char* argv[]) {
   std::string why;
   if (!cuda::device_available(why)) {
     std::cout << "hmfnet_gpu_tests: skipped: " << why << '\n';
-    return kSkipped;
+    return k_skipped;
   }
   return Catch::Session().run(argc, argv);
 }

@@ -10,8 +10,8 @@ using namespace hmfnet::verification;
 TEST_CASE("excess removes the floor in quadrature and is zero below it", "[onset_grid]") {
   CHECK(excess(0.5, 0.3) == 0.4);
   CHECK(excess(0.2, 0.3) == 0.0);
-  CHECK(in_window(kWindowLow));
-  CHECK(in_window(kWindowHigh));
+  CHECK(in_window(k_window_low));
+  CHECK(in_window(k_window_high));
   CHECK_FALSE(in_window(0.099));
   CHECK_FALSE(in_window(0.351));
 }

@@ -57,10 +57,10 @@ std::unique_ptr<Scene> complete_scene(NodeIndex n) {
 /// A stored network, on the force auto gives it (sparse unless A = a a^T); its Perron pair from
 /// Anasazi.
 template <class Scene = NetworkScene>
-std::unique_ptr<Scene> stored_scene(Network network) {
+std::unique_ptr<Scene> stored_scene(const Network& network) {
   auto s = std::make_unique<Scene>();
   s->n = network.size();
-  s->theory_net = std::move(network);
+  s->theory_net = network;
   s->rows = std::make_unique<DistributedNetwork>(s->theory_net);
   const PerronResult perron = perron_eigenpair(*s->rows);
   s->lambda = s->theory_lambda = perron.lambda;

@@ -3,7 +3,7 @@
 // measured points, so the rule is unit-tested (tests/verification/test_onset_grid.cpp).
 //
 // Why refine: the onset fit needs >= 3 equilibrated points whose excess E = sqrt(<R>^2 - R0^2)
-// lies in [kWindowLow, kWindowHigh]. Where the finite-size floor R0 is high (small mean degree:
+// lies in [k_window_low, k_window_high]. Where the finite-size floor R0 is high (small mean degree:
 // R0 = 0.20 and 0.28 for ER <d> = 20 and 10 at N = 10^4, full scale) the window is reached only
 // at x ~ 1.3-1.6, and a grid fixed in advance for every network (1.2, 1.35, 1.5, 2) can put only
 // two points in it (measured: ER <d> = 10, 20 and SF alpha 3.8 at full scale). A grid fine
@@ -19,14 +19,14 @@
 
 namespace hmfnet::verification {
 
-constexpr double kWindowLow = 0.1;
-constexpr double kWindowHigh = 0.35;
-constexpr int kMinimumFitPoints = 3;
+constexpr double k_window_low = 0.1;
+constexpr double k_window_high = 0.35;
+constexpr int k_minimum_fit_points = 3;
 
 /// E = sqrt(max(<R>^2 - R0^2, 0)): the floor removed in quadrature (onset_sweep.hpp).
 inline double excess(double R, double R0) { return std::sqrt(std::max(R * R - R0 * R0, 0.0)); }
 
-inline bool in_window(double E) { return E >= kWindowLow && E <= kWindowHigh; }
+inline bool in_window(double E) { return E >= k_window_low && E <= k_window_high; }
 
 /// The midpoints the refinement rule adds to the increasing grid x with excesses E (sorted).
 inline std::vector<double> refinement_points(const std::vector<double>& x,
@@ -35,7 +35,7 @@ inline std::vector<double> refinement_points(const std::vector<double>& x,
   for (std::size_t k = 0; k + 1 < x.size(); ++k) {
     const double mid = 0.5 * (x[k] + x[k + 1]);
     const double lo = std::min(E[k], E[k + 1]), hi = std::max(E[k], E[k + 1]);
-    if (mid > 1.0 && hi >= kWindowLow && lo <= kWindowHigh) added.push_back(mid);
+    if (mid > 1.0 && hi >= k_window_low && lo <= k_window_high) added.push_back(mid);
   }
   return added;
 }

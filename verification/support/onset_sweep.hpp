@@ -16,7 +16,7 @@
 //   approach of <R> to its plateau is slower than 1/gamma, time constant tau ~ 6-9 / gamma at
 //   x = 1.35-3 (e.g. x = 1.35, sigma0 = 0.35: R 0.249 -> 0.30 over ~200 time units); the steps
 //   between grid points are Delta R ~ 0.05. A segment of T2 at one K is therefore used only if
-//   the time already spent at that K before its average starts is at least kEquilibrationEfolds /
+//   the time already spent at that K before its average starts is at least k_equilibration_efolds /
 //   gamma(x) (= 15 / gamma ~ 2 tau: the residual lag is <~ e^-2 Delta R ~ 0.007 at the start of the
 //   average, less over it, below the per-point error ~0.01-0.02). A grid point gets m repeated
 //   segments at its K (a repeated K continues the state; the first m - 1 are relaxation) with
@@ -32,7 +32,7 @@
 //   quadrature because the incoherent fluctuation and the coherent part add as independent
 //   vectors. Near onset E^2 grows linearly in K (eq:globalOrderRInDeltaK), so x_on is the zero of
 //   the weighted least-squares line through (x, E^2) over the equilibrated grid points with
-//   kWindowLow <= E <= kWindowHigh (at least 3): below 0.1 the excess is dominated by the
+//   k_window_low <= E <= k_window_high (at least 3): below 0.1 the excess is dominated by the
 //   near-critical enhancement of the floor fluctuations (E ~ 0.07 at x = 0.9 measured, ER
 //   <d> = 100, N = 1000), above 0.35 R^2 bends away from the line (eq:globalOrderRInDeltaK holds
 //   only near K_c). When the sweep leaves fewer than 3 points in the window, the grid is refined
@@ -72,7 +72,7 @@
 namespace hmfnet::verification {
 
 /// c of the equilibration criterion: time at K before a segment's average >= c / gamma(x).
-constexpr double kEquilibrationEfolds = 15.0;
+constexpr double k_equilibration_efolds = 15.0;
 
 struct SweepProtocol {
   std::vector<double> x;  ///< K / K_c, increasing, x[0] = 0 (the floor R0)
@@ -115,10 +115,10 @@ struct Onset {
   double x = NAN, err = NAN;
 };
 
-/// Time at K = x K_c before an average may start: kEquilibrationEfolds / gamma(x); infinite at
+/// Time at K = x K_c before an average may start: k_equilibration_efolds / gamma(x); infinite at
 /// x <= 1 (no growing mode).
 inline double equilibration_time(double x, double sigma0) {
-  return x > 1.0 ? kEquilibrationEfolds / growth_rate(x, sigma0) : INFINITY;
+  return x > 1.0 ? k_equilibration_efolds / growth_rate(x, sigma0) : INFINITY;
 }
 
 /// Segments for one grid point: the smallest m with (m - 1) T2 + T1 >= equilibration_time, if
@@ -170,11 +170,12 @@ inline void reduce_point(OnsetCurve& c, const SimulationResult& r, std::size_t f
   const double n = static_cast<double>(used.size());
   std::vector<double> per_replica(B, 0.0);
   double sem2 = 0.0;
-  for (const std::size_t i : used)
+  for (const std::size_t i : used) {
     for (std::size_t b = 0; b < B; ++b) {
       per_replica[b] += r.points[i].R_mean[b] / n;
       sem2 += r.points[i].R_sem[b] * r.points[i].R_sem[b] / (n * n);
     }
+  }
   // sem2 sums B replicas' SEM^2 of the segment mean: its rms over replicas.
   const double sem = std::sqrt(sem2 / static_cast<double>(B));
   const MeanSd m_sd = mean_sd(per_replica);
@@ -238,19 +239,21 @@ inline void run_sweep(OnsetCurve& c, const DistributedNetwork& distributed, cons
     c.K.push_back(v * c.Kc);
     c.segments.push_back(m);
     p.K.insert(p.K.end(), static_cast<std::size_t>(m), v * c.Kc);
-    if (protocol.pipeline_steps)
+    if (protocol.pipeline_steps) {
       p.steps.insert(
           p.steps.end(), static_cast<std::size_t>(m),
           pipeline_step(v, c.sigma0, protocol.duration, protocol.transient, protocol.family));
+    }
   }
   p.h = protocol.h;
   p.duration = protocol.duration;
   p.transient = protocol.transient;
   p.continue_state = true;
   p.replicas.clear();
-  for (int b = 1; b <= protocol.replicas; ++b)
+  for (int b = 1; b <= protocol.replicas; ++b) {
     p.replicas.push_back(
         {protocol.omega, c.sigma0, protocol.seed_base + static_cast<std::uint64_t>(b)});
+  }
   p.record_stride = 1000;
   const auto force = app::choose_force("auto", "float64", distributed);
   const SimulationResult r = simulate(distributed, net.degrees(), *force, p);
@@ -309,7 +312,7 @@ inline OnsetCurve refined_sweep(const OnsetCurve& first, const DistributedNetwor
 }
 
 /// Steps 1-3 for one network: lambda, the simulated sweep (refined once if the window holds
-/// fewer than kMinimumFitPoints points, onset_grid.hpp), the theory curve, both onsets.
+/// fewer than k_minimum_fit_points points, onset_grid.hpp), the theory curve, both onsets.
 inline OnsetCurve measure_onset(const Network& net, double sigma0, const SweepProtocol& protocol) {
   OnsetCurve c;
   const DistributedNetwork distributed(net);
@@ -321,7 +324,7 @@ inline OnsetCurve measure_onset(const Network& net, double sigma0, const SweepPr
   c.R0 = c.R.front();
   theory_curve(c, net, perron);
   fit_onsets(c);
-  if (c.points >= kMinimumFitPoints) return c;
+  if (c.points >= k_minimum_fit_points) return c;
   std::vector<double> E;
   for (const double R : c.R) E.push_back(excess(R, c.R0));
   const std::vector<double> added = refinement_points(c.x, E);

@@ -33,7 +33,7 @@
 namespace hmfnet::verification {
 
 /// sigma0 of the work-precision scenes.
-constexpr double kSceneSigma0 = 0.35;
+constexpr double k_scene_sigma0 = 0.35;
 
 /// The largest h' <= h with duration / h' and transient / h' whole numbers, when both are whole
 /// numbers of time units (h unchanged otherwise).
@@ -64,7 +64,7 @@ inline StepChoice pipeline_step(double x, double sigma0, double duration, double
         : x <= 3.0 ? StepChoice{"blanes_moan", 0.16}
                    : StepChoice{"blanes_moan", 0.08};
   }
-  for (double f = sigma0 / kSceneSigma0; f > 1.0 + 1e-12; f /= 2.0) s.h /= 2.0;
+  for (double f = sigma0 / k_scene_sigma0; f > 1.0 + 1e-12; f /= 2.0) s.h /= 2.0;
   s.h = whole_steps(s.h, duration, transient);
   return s;
 }

@@ -8,11 +8,11 @@
 
 namespace hmfnet::verification::qss {
 
-constexpr double kU = 0.69;
-constexpr int kReplicas = 16;
-constexpr double kSmooth = 50.0;  ///< running-mean width and initial window, time units
-constexpr int kBootstrap = 200;   ///< resamples of the replicas for a passage's se
+constexpr double k_U = 0.69;
+constexpr int k_replicas = 16;
+constexpr double k_smooth = 50.0;  ///< running-mean width and initial window, time units
+constexpr int k_bootstrap = 200;   ///< resamples of the replicas for a passage's se
 
-inline double sigma0() { return std::sqrt(2.0 * kU - 1.0); }
+inline double sigma0() { return std::sqrt(2.0 * k_U - 1.0); }
 
 }  // namespace hmfnet::verification::qss

@@ -15,7 +15,7 @@ namespace {
 
 // The compute capability this build has code for: sm_90 and PTX for 9.0, which the driver
 // compiles for a newer card (CMAKE_CUDA_ARCHITECTURES in cmake/HmfnetCuda.cmake).
-constexpr int kMinimumMajor = 9;
+constexpr int k_minimum_major = 9;
 
 // One thread per element.
 __global__ void arithmetic_kernel(const double* theta, const double* p, const double* g,
@@ -80,7 +80,7 @@ bool device_available(std::string& why) {
   }
   cudaDeviceProp properties{};
   if (failed(cudaGetDeviceProperties(&properties, 0), "cudaGetDeviceProperties", why)) return false;
-  if (properties.major < kMinimumMajor) {
+  if (properties.major < k_minimum_major) {
     why = std::string("CUDA device ") + properties.name + " (compute capability " +
           std::to_string(properties.major) + "." + std::to_string(properties.minor) +
           ") has no code in this build (built for 9.0 and newer)";
@@ -104,10 +104,10 @@ bool run_arithmetic_check(const ArithmeticCheckInput& in, ArithmeticCheckOutput&
       failed(theta_out.allocate(n), "cudaMalloc", message)) {
     return false;
   }
-  constexpr unsigned kThreads = 256;
+  constexpr unsigned k_threads = 256;
   if (n > 0) {
-    const auto blocks = static_cast<unsigned>((n + kThreads - 1) / kThreads);
-    arithmetic_kernel<<<blocks, kThreads>>>(theta.data(), p.data(), g.data(), n, in.c_kick,
+    const auto blocks = static_cast<unsigned>((n + k_threads - 1) / k_threads);
+    arithmetic_kernel<<<blocks, k_threads>>>(theta.data(), p.data(), g.data(), n, in.c_kick,
                                             in.coupling, in.c_drift, cs.data(), p_out.data(),
                                             theta_out.data());
     if (failed(cudaGetLastError(), "arithmetic kernel launch", message) ||
