@@ -6,6 +6,9 @@
 //  - YardstickStep/N/degree/threads: the yardstick (docs/performance.md, goal 2), the plain
 //    OpenMP CSR loop over an interleaved [cos, sin] array (one accumulator pair per row, an
 //    `omp parallel for` per loop, the same flags), one step of one replica;
+//  - SegmentedStep/N/degree/replicas/precision/slice_KiB: LeapFrogStep at 1 thread with the
+//    column segments forced to slices of slice_KiB of the [cos, sin] table (0: unsegmented),
+//    the measurement behind the segment size rule (dynamics/column_segments.hpp);
 //  - PlainCsrStep: the textbook loop a user would write first: two CSR products over separate
 //    cos and sin arrays, then the kick and drift (1 thread);
 //  - IndexStreamFloor: reading the int32 column array once (the memory floor of any pass);
@@ -56,6 +59,22 @@ void LeapFrogStep(benchmark::State& state) {
   const auto force = app::choose_force("sparse", state.range(4) == 0 ? "float64" : "float32", d);
   leapfrog_steps(state, d, *force, static_cast<int>(state.range(2)), 6.0, 1.0, 0.01, 50.0,
                  "nnz_steps_per_s", static_cast<double>(net.nnz()));
+}
+
+void SegmentedStep(benchmark::State& state) {
+  const Network& net = bench::cached_erdos_renyi(static_cast<NodeIndex>(state.range(0)),
+                                                 static_cast<double>(state.range(1)));
+  omp_set_num_threads(1);
+  const DistributedNetwork d(net);
+  const auto replicas = static_cast<int>(state.range(2));
+  const bool f64 = state.range(3) == 0;
+  const auto record = static_cast<std::int64_t>(2 * replicas) * (f64 ? 8 : 4);
+  const auto width =
+      state.range(4) == 0 ? k_unsegmented : static_cast<NodeIndex>((state.range(4) << 10) / record);
+  NetworkForce force(d, f64 ? ForcePrecision::float64 : ForcePrecision::float32, width);
+  leapfrog_steps(state, d, force, replicas, 6.0, 1.0, 0.01, 50.0, "nnz_steps_per_s",
+                 static_cast<double>(net.nnz()));
+  state.counters["segments"] = force.segments();
 }
 
 void RankOneStep(benchmark::State& state) {
@@ -157,6 +176,11 @@ BENCHMARK(YardstickStep)
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(PlainCsrStep)->Args({10000, 100})->Unit(benchmark::kMillisecond);
+// Args: N, mean degree, replicas, precision, slice KiB (0: unsegmented).
+BENCHMARK(SegmentedStep)
+    ->ArgsProduct({{1000000}, {100}, {1, 8}, {0, 1}, {0, 512, 1024, 2048, 4096, 16384}})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 // Args: N, replicas, threads, self-loops (1: A = 1 1^T, the Antoni-Ruffo HMF; 0: K_N).
 BENCHMARK(RankOneStep)
     ->ArgsProduct({{2000, 20000}, {1, 16}, {1, 2}, {0, 1}})

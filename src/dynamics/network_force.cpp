@@ -1,5 +1,6 @@
 #include "dynamics/network_force.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -152,6 +153,108 @@ void rows_kernel_single(const RowKernelArgs<T>& a, NodeIndex rows) {
   }
 }
 
+// The segmented kernel (column_segments.hpp) keeps each row's four partial sums of every
+// replica between segments in `carry` (rows x 4 x 2B values of T) and where its run of entries
+// stopped in `cursor` (rows). An entry's partial is fixed by its place in the row as in the
+// unblocked kernels (place mod 4, the last d mod 4 entries in partial 0), and the runs of a row
+// arrive in CSR order, so every partial receives the same additions in the same order.
+template <typename T>
+struct SegmentArgs {
+  const ColumnSegments* segments;
+  T* carry;
+  std::uint32_t* cursor;
+};
+
+// Adds entries place .. place + n - 1 of a row whose first `full` entries precede its tail to
+// the row's carried partials (in L1 while the run lasts). One loop whatever the run's first
+// place: runs are short (~6 entries at N = 10^6, degree 100), so a rotation of four register
+// accumulators with its remainder branches measured no faster (bench SegmentedStep, Intel Xeon).
+template <typename T, int B, bool Weighted>
+inline void add_run(T* p, const T* table, const NodeIndex* cols, const T* w, EdgeOffset place,
+                    EdgeOffset n, EdgeOffset full, int nb) {
+  const auto record = 2 * static_cast<std::ptrdiff_t>(B > 0 ? B : nb);
+  const EdgeOffset split = std::clamp<EdgeOffset>(full - place, 0, n);
+  for (EdgeOffset i = 0; i < n; ++i) {
+    T* acc = i < split ? p + ((place + i) & 3) * record : p;
+    add_record(acc, table + record * cols[i], Weighted ? w[i] : T(1), static_cast<int>(record));
+  }
+}
+
+// Row r's outputs from its four carried partial sums of every replica (partial j of value v at
+// p[j * stride + v]), combined as rows_kernel combines them: (s0 + s1) + (s2 + s3) in T.
+template <typename T>
+inline void finish_row(const RowKernelArgs<T>& a, NodeIndex r, const T* p, std::size_t stride,
+                       int nb) {
+  const double* o = a.owned_cs + 2 * static_cast<std::ptrdiff_t>(r) * nb;
+  const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(r) * nb;
+  for (int b = 0; b < nb; ++b) {
+    const std::size_t re = 2 * static_cast<std::size_t>(b), im = re + 1;
+    const double yc = (p[re] + p[stride + re]) + (p[2 * stride + re] + p[3 * stride + re]);
+    const double ys =
+        static_cast<double>((p[im] + p[stride + im]) + (p[2 * stride + im] + p[3 * stride + im]));
+    const double c = o[re], s = o[im];
+    a.g[base + b] = a.inverse_n * (c * ys - s * yc);
+    a.y[2 * (base + b)] = yc;
+    a.y[2 * (base + b) + 1] = ys;
+    a.terms[2 * (base + b)] = std::sqrt(yc * yc + ys * ys);
+    a.terms[2 * (base + b) + 1] = c * yc + s * ys;
+  }
+}
+
+// Rows walked once per segment, each thread the same rows in every segment (static schedule of
+// the same loop: OpenMP gives a thread the same iterations), so the carry needs no barrier
+// between segments; one barrier at the end, as the unblocked loop has.
+template <typename T, int B, bool Weighted>
+void segmented_rows_kernel(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, NodeIndex rows,
+                           int runtime_b) {
+  const int nb = B > 0 ? B : runtime_b;
+  const std::size_t record = 2 * static_cast<std::size_t>(nb), stride = 4 * record;
+  const int count = sa.segments->count();
+  for (int seg = 0; seg < count; ++seg) {
+    const std::uint32_t* run = sa.segments->run_start(seg);
+    const NodeIndex* cols = sa.segments->cols(seg);
+    const bool first = seg == 0, last = seg + 1 == count;
+#pragma omp for schedule(static) nowait
+    for (NodeIndex r = 0; r < rows; ++r) {
+      T* p = sa.carry + static_cast<std::size_t>(r) * stride;
+      if (first) std::fill(p, p + stride, T(0));
+      const EdgeOffset begin = a.row_ptr[r], degree = a.row_ptr[r + 1] - begin;
+      const EdgeOffset place = first ? 0 : sa.cursor[r];
+      const EdgeOffset n = run[r + 1] - run[r];
+      const T* w = Weighted ? a.weights + begin + place : nullptr;
+      add_run<T, B, Weighted>(p, a.column_cs, cols + run[r], w, place, n, degree / 4 * 4, nb);
+      if (last) {
+        finish_row(a, r, p, record, nb);
+      } else {
+        sa.cursor[r] = static_cast<std::uint32_t>(place + n);
+      }
+    }
+  }
+#pragma omp barrier
+}
+
+template <typename T, bool Weighted>
+void dispatch_segmented(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, NodeIndex rows,
+                        int b) {
+  switch (b) {
+    case 1:
+      segmented_rows_kernel<T, 1, Weighted>(a, sa, rows, b);
+      break;
+    case 2:
+      segmented_rows_kernel<T, 2, Weighted>(a, sa, rows, b);
+      break;
+    case 4:
+      segmented_rows_kernel<T, 4, Weighted>(a, sa, rows, b);
+      break;
+    case 8:
+      segmented_rows_kernel<T, 8, Weighted>(a, sa, rows, b);
+      break;
+    default:
+      segmented_rows_kernel<T, 0, Weighted>(a, sa, rows, b);
+      break;
+  }
+}
+
 template <typename T, bool Weighted>
 void dispatch(const RowKernelArgs<T>& a, NodeIndex rows, int b) {
   switch (b) {
@@ -182,6 +285,19 @@ void run_kernel(const RowKernelArgs<T>& a, NodeIndex rows, int b) {
   }
 }
 
+// Kept out of run_rows: with the segmented kernels inlined there too, GCC 12 stopped inlining
+// the unblocked ones into it, and ER N = 10^4 with 8 float64 replicas ran 1.25x slower (perf:
+// rows_kernel<double, 8> called instead of inlined; bench/segmented_rows_table.sh).
+template <typename T>
+[[gnu::noinline]] void run_segmented_kernel(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa,
+                                            NodeIndex rows, int b) {
+  if (a.weights == nullptr) {
+    dispatch_segmented<T, false>(a, sa, rows, b);
+  } else {
+    dispatch_segmented<T, true>(a, sa, rows, b);
+  }
+}
+
 // to = from in float32; `to` sized by the caller (team.hpp: no allocation inside a team).
 void narrow(const std::vector<double>& from, std::vector<float>& to) {
   const std::size_t n = from.size();
@@ -191,12 +307,14 @@ void narrow(const std::vector<double>& from, std::vector<float>& to) {
 
 }  // namespace
 
-NetworkForce::NetworkForce(const DistributedNetwork& network, ForcePrecision precision)
+NetworkForce::NetworkForce(const DistributedNetwork& network, ForcePrecision precision,
+                           NodeIndex segment_width)
     : m_network(network),
       m_adjacency(network.local_adjacency()),
       m_inverse_n(1.0 / static_cast<double>(network.global_size())),
       m_identity_import(network.columns_are_owned_rows()),
-      m_precision(precision) {
+      m_precision(precision),
+      m_segment_request(segment_width) {
   if (m_precision == ForcePrecision::float32) {
     m_weights_f32.resize(m_adjacency.weights.size());
 #pragma omp parallel
@@ -216,7 +334,38 @@ void NetworkForce::run_rows(const T* weights, const T* column_cs, NodeIndex rows
                               g.data(),
                               m_y.data(),
                               m_terms.data()};
-  run_kernel(args, rows, replicas);
+  if (m_segments.count() == 1) {
+    run_kernel(args, rows, replicas);
+    return;
+  }
+  T* carry = nullptr;
+  if constexpr (sizeof(T) == sizeof(float)) {
+    carry = m_carry_f32.data();
+  } else {
+    carry = m_carry.data();
+  }
+  run_segmented_kernel(args, SegmentArgs<T>{&m_segments, carry, m_cursor.data()}, rows, replicas);
+}
+
+void NetworkForce::prepare_segments(NodeIndex rows, int replicas) {
+  const std::size_t value_bytes =
+      m_precision == ForcePrecision::float64 ? sizeof(double) : sizeof(float);
+  const NodeIndex width =
+      m_segment_request != k_automatic_segments
+          ? m_segment_request
+          : automatic_segment_width(
+                m_adjacency.columns, static_cast<EdgeOffset>(m_adjacency.cols.size()), rows,
+                2 * static_cast<std::size_t>(replicas) * value_bytes, l2_cache_bytes());
+  if (width != m_segment_width) {
+    m_segments = ColumnSegments(m_adjacency.row_ptr, m_adjacency.cols, m_adjacency.columns, width);
+    m_segment_width = width;
+  }
+  const std::size_t carried = m_segments.count() > 1 ? 8 * static_cast<std::size_t>(rows) *
+                                                           static_cast<std::size_t>(replicas)
+                                                     : 0;
+  m_carry.resize(m_precision == ForcePrecision::float64 ? carried : 0);
+  m_carry_f32.resize(m_precision == ForcePrecision::float32 ? carried : 0);
+  m_cursor.resize(carried > 0 ? static_cast<std::size_t>(rows) : 0);
 }
 
 void NetworkForce::prepare(const RotorState& state, std::vector<double>& g, ForceSums& sums) {
@@ -235,6 +384,7 @@ void NetworkForce::prepare(const RotorState& state, std::vector<double>& g, Forc
   m_sums.prepare(static_cast<std::size_t>(state.rows), 2 * nb);
   sums.order.resize(static_cast<std::size_t>(nb));
   sums.coupling.resize(static_cast<std::size_t>(nb));
+  prepare_segments(state.rows, nb);
 }
 
 void NetworkForce::evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) {

@@ -11,8 +11,13 @@
 // double). Error per row: |dy_n| <= (d_n + 3) u sum_m |A_nm| with u = 2^-24 (rounding of each
 // stored value and of each addition, Higham's gamma_n bound for the four-way split sum); the
 // gain is half the bytes per neighbour in the gather that bounds the kernel.
+// Where the gathered table outgrows the L2 cache the rows are walked segment by segment
+// (column_segments.hpp: CSR segmenting), with the same additions in the same order: the same
+// bits as the unblocked walk, for any segment width.
+#include <cstdint>
 #include <vector>
 
+#include "dynamics/column_segments.hpp"
 #include "dynamics/coupling_force.hpp"
 #include "dynamics/force_precision.hpp"
 #include "dynamics/ordered_sum.hpp"
@@ -22,9 +27,12 @@ namespace hmfnet {
 
 class NetworkForce : public CouplingForce {
  public:
-  /// Keeps a reference to `network`, which must outlive this object.
+  /// Keeps a reference to `network`, which must outlive this object. `segment_width`: columns
+  /// per segment, k_automatic_segments (automatic_segment_width against this CPU's L2 for the
+  /// replica count of prepare), k_unsegmented, or a width >= 1 (tests, benchmarks).
   explicit NetworkForce(const DistributedNetwork& network,
-                        ForcePrecision precision = ForcePrecision::float64);
+                        ForcePrecision precision = ForcePrecision::float64,
+                        NodeIndex segment_width = k_automatic_segments);
 
   void prepare(const RotorState& state, std::vector<double>& g, ForceSums& sums) override;
   void evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) override;
@@ -35,6 +43,13 @@ class NetworkForce : public CouplingForce {
     return m_precision == ForcePrecision::float64 ? "sparse" : "sparse-float32";
   }
   ForcePrecision precision() const { return m_precision; }
+  /// Column segments of the last prepare (1: unblocked).
+  int segments() const { return m_segments.count(); }
+  /// Bytes the segmented walk holds besides the network: the segments and the carried sums.
+  std::size_t segment_bytes() const {
+    return m_segments.bytes() + m_carry.size() * sizeof(double) +
+           m_carry_f32.size() * sizeof(float) + m_cursor.size() * sizeof(std::uint32_t);
+  }
   const std::vector<double>& local_fields() const override { return m_y; }
 
  private:
@@ -42,6 +57,8 @@ class NetworkForce : public CouplingForce {
   template <typename T>
   void run_rows(const T* weights, const T* column_cs, NodeIndex rows, int replicas,
                 std::vector<double>& g);
+  /// Cuts the columns for `replicas` (rebuilt only when the width changes) and sizes the carry.
+  void prepare_segments(NodeIndex rows, int replicas);
 
   const DistributedNetwork& m_network;
   const DistributedNetwork::LocalAdjacency& m_adjacency;  ///< the network's own rows
@@ -56,6 +73,14 @@ class NetworkForce : public CouplingForce {
   ForcePrecision m_precision;
   std::vector<float> m_weights_f32;  // float32: the stored weights (empty for 0/1)
   std::vector<float> m_column_f32;   // float32: the gathered table
+  NodeIndex m_segment_request;
+  NodeIndex m_segment_width = -1;  // the width m_segments was cut with (-1: not yet)
+  ColumnSegments m_segments;
+  // Segmented walk: rows x 4 partials x replicas x [cos, sin] in the table's type, and where
+  // each row's run stopped.
+  std::vector<double> m_carry;
+  std::vector<float> m_carry_f32;
+  std::vector<std::uint32_t> m_cursor;
 };
 
 }  // namespace hmfnet

@@ -1,0 +1,131 @@
+#include "dynamics/column_segments.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <string>
+
+namespace hmfnet {
+
+namespace {
+
+// "2048K" or "2M" (sysfs cache size) in bytes; 0 when unreadable.
+std::size_t parse_cache_size(const std::string& text) {
+  std::size_t used = 0;
+  unsigned long long value = 0;
+  try {
+    value = std::stoull(text, &used);
+  } catch (...) {
+    return 0;
+  }
+  const char unit = used < text.size() ? text[used] : ' ';
+  if (unit == 'K') value <<= 10;
+  if (unit == 'M') value <<= 20;
+  return static_cast<std::size_t>(value);
+}
+
+std::size_t sysfs_l2_bytes() {
+  for (int index = 0; index < 8; ++index) {
+    const std::string dir = "/sys/devices/system/cpu/cpu0/cache/index" + std::to_string(index);
+    std::ifstream level_file(dir + "/level"), size_file(dir + "/size");
+    int level = 0;
+    std::string size;
+    if (!(level_file >> level) || !(size_file >> size)) continue;
+    if (level == 2) return parse_cache_size(size);
+  }
+  return 0;
+}
+
+std::size_t read_l2_bytes() {
+  // glibc answers from CPUID; it returns 0 or -1 where it cannot tell (some VMs, other libcs).
+  const long from_sysconf = sysconf(_SC_LEVEL2_CACHE_SIZE);
+  if (from_sysconf > 0) return static_cast<std::size_t>(from_sysconf);
+  const std::size_t from_sysfs = sysfs_l2_bytes();
+  return from_sysfs > 0 ? from_sysfs : k_default_l2_bytes;
+}
+
+std::size_t at(std::size_t s, std::size_t rows, NodeIndex r) {
+  return s * (rows + 1) + static_cast<std::size_t>(r);
+}
+
+}  // namespace
+
+std::size_t l2_cache_bytes() {
+  static const std::size_t bytes = read_l2_bytes();
+  return bytes;
+}
+
+NodeIndex automatic_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex rows,
+                                  std::size_t record_bytes, std::size_t l2_bytes) {
+  const auto table = static_cast<double>(columns) * static_cast<double>(record_bytes);
+  if (columns <= 0 || rows <= 0 || table <= static_cast<double>(l2_bytes)) return k_unsegmented;
+  const double by_cache = std::ceil(table / (static_cast<double>(l2_bytes) / 2));
+  const double by_entries =
+      std::floor(static_cast<double>(nnz) / static_cast<double>(rows) / k_min_entries_per_segment);
+  const double segments = std::min(by_cache, by_entries);
+  if (segments < 2) return k_unsegmented;
+  return static_cast<NodeIndex>(std::ceil(static_cast<double>(columns) / segments));
+}
+
+ColumnSegments::ColumnSegments(const std::vector<EdgeOffset>& row_ptr,
+                               const std::vector<NodeIndex>& cols, NodeIndex columns,
+                               NodeIndex width) {
+  const NodeIndex rows = row_ptr.empty() ? 0 : static_cast<NodeIndex>(row_ptr.size() - 1);
+  const NodeIndex count = width >= columns ? 1 : (columns - 1) / width + 1;
+  if (count <= 1 || rows == 0) return;
+  const auto nrows = static_cast<std::size_t>(rows);
+  const auto row = [&](NodeIndex r) {
+    return std::make_pair(cols.begin() + row_ptr[static_cast<std::size_t>(r)],
+                          cols.begin() + row_ptr[static_cast<std::size_t>(r) + 1]);
+  };
+  bool cuttable = true;
+#pragma omp parallel for schedule(static) reduction(&& : cuttable)
+  for (NodeIndex r = 0; r < rows; ++r) {
+    const auto [b, e] = row(r);
+    cuttable = cuttable && e - b <= UINT32_MAX && std::is_sorted(b, e);
+  }
+  if (!cuttable) return;
+  // Run lengths, then each segment's prefix sums over its rows (a CSR row pointer per segment),
+  // in place.
+  std::vector<std::uint32_t> run(static_cast<std::size_t>(count) * (nrows + 1), 0);
+#pragma omp parallel for schedule(static)
+  for (NodeIndex r = 0; r < rows; ++r) {
+    auto [k, e] = row(r);
+    for (NodeIndex s = 0; s < count; ++s) {
+      const auto next = s + 1 < count ? std::lower_bound(k, e, (s + 1) * width) : e;
+      run[at(static_cast<std::size_t>(s), nrows, r) + 1] = static_cast<std::uint32_t>(next - k);
+      k = next;
+    }
+  }
+  std::vector<std::size_t> segment_start(static_cast<std::size_t>(count) + 1, 0);
+  for (std::size_t s = 0; s < static_cast<std::size_t>(count); ++s) {
+    std::uint64_t total = 0;
+    for (NodeIndex r = 0; r < rows; ++r) {
+      total += run[at(s, nrows, r) + 1];
+      if (total > UINT32_MAX) return;
+      run[at(s, nrows, r) + 1] = static_cast<std::uint32_t>(total);
+    }
+    segment_start[s + 1] = segment_start[s] + total;
+  }
+  m_count = count;
+  m_rows = nrows;
+  m_segment_start = std::move(segment_start);
+  m_run_start = std::move(run);
+  const auto& starts = m_run_start;
+  m_cols.resize(cols.size());
+#pragma omp parallel for schedule(static)
+  for (NodeIndex r = 0; r < rows; ++r) {
+    auto k = row(r).first;
+    for (std::size_t s = 0; s < static_cast<std::size_t>(count); ++s) {
+      const std::size_t first = starts[at(s, nrows, r)];
+      const auto length = static_cast<std::ptrdiff_t>(starts[at(s, nrows, r) + 1] - first);
+      std::copy(k, k + length,
+                m_cols.begin() + static_cast<std::ptrdiff_t>(m_segment_start[s] + first));
+      k += length;
+    }
+  }
+}
+
+}  // namespace hmfnet

@@ -1,0 +1,86 @@
+#pragma once
+// CSR segmenting of the sparse force kernel's gather (Zhang, Kiriansky, Mendis, Amarasinghe,
+// Zaharia, Shun, "Making caches work for graph analytics", IEEE BigData 2017, "CSR segmenting"):
+// the column space is cut into segments of `width` consecutive columns whose slice of the
+// gathered [cos, sin] table fits in the L2 cache, and the kernel walks the rows once per segment,
+// each row's partial sums carried from one segment to the next. The rows are sorted by column,
+// so a row's entries in a segment are one contiguous run of its CSR entries and the segments,
+// taken in order, add them in the CSR order: the same additions as the unblocked kernel, the
+// same bits (network_force.cpp). As in the paper, each segment is a CSR of its own (its column
+// indices contiguous, so the index stream is read once a step, not once a segment per row).
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "network/network.hpp"
+
+namespace hmfnet {
+
+/// The L2 cache of the CPU this process runs on, in bytes: sysconf(_SC_LEVEL2_CACHE_SIZE), else
+/// the level-2 entry of /sys/devices/system/cpu/cpu0/cache, else k_default_l2_bytes. Read once.
+std::size_t l2_cache_bytes();
+
+/// Used where neither source answers: the smallest per-core L2 of the machines measured so far
+/// (AMD EPYC: 512 KiB; Intel Xeon: 2 MiB), so a slice sized by it fits on both.
+inline constexpr std::size_t k_default_l2_bytes = std::size_t{512} << 10;
+
+/// Segments hold at least this many stored entries per row on average: each row pays, per
+/// segment, a carry of its four partial sums of every replica (read and written) and a short
+/// run's loop, which outweigh the L2 hits of fewer entries. Measured on the Intel Xeon
+/// (docs/performance.md, "Segmented rows"; ER N = 10^6, degree 100, 1 thread): float64 with 8
+/// replicas ran 1.3x faster in 8 segments (12.5 entries) than in 31 (3.2), float32 with 8
+/// replicas fastest in 16 (6.25) of 4, 16, 31 and 62.
+inline constexpr double k_min_entries_per_segment = 6.0;
+
+/// A segment width in columns: automatic (automatic_segment_width), none (unblocked) or forced.
+inline constexpr NodeIndex k_automatic_segments = 0;
+inline constexpr NodeIndex k_unsegmented = INT32_MAX;
+
+/// The rule: the whole column space (one segment) when the table, columns x record_bytes, fits
+/// in `l2_bytes`; else as many segments as slices of half the L2 (the other half holds the
+/// streams of column indices, run starts and carried sums; 1 MiB slices measured faster than
+/// 512 KiB and 2 MiB ones on the 2 MiB L2 of the Intel Xeon), but no more than leave
+/// k_min_entries_per_segment entries per row and segment, and one segment when that leaves
+/// fewer than two. record_bytes = 2 x replicas x sizeof(the table's type).
+NodeIndex automatic_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex rows,
+                                  std::size_t record_bytes, std::size_t l2_bytes);
+
+/// The rows cut by columns, as the paper stores them: one CSR per segment (its column indices
+/// in one array, segment after segment, and per segment the start of each row's run). Memory:
+/// nnz x 4 bytes (one more column index array) plus segments x (rows + 1) x 4 bytes (at most
+/// nnz x 4 / k_min_entries_per_segment under the automatic rule, a sixth of the index array). The
+/// weights are not copied: a row's run in a segment continues where its run in the previous segment
+/// ended.
+class ColumnSegments {
+ public:
+  /// One segment: the unblocked kernel.
+  ColumnSegments() = default;
+
+  /// Cuts [0, columns) into segments of `width` columns (width >= 1). Rows whose columns are not
+  /// ascending cannot be cut (a segment's entries would not be contiguous in the row), nor can a
+  /// segment of 2^32 or more entries: then one segment. Runs on its own threads (outside a team).
+  ColumnSegments(const std::vector<EdgeOffset>& row_ptr, const std::vector<NodeIndex>& cols,
+                 NodeIndex columns, NodeIndex width);
+
+  int count() const { return m_count; }
+  /// Row r's run in segment s is cols(s)[run_start(s)[r]] .. cols(s)[run_start(s)[r + 1] - 1].
+  const std::uint32_t* run_start(int s) const {
+    return m_run_start.data() + static_cast<std::size_t>(s) * (m_rows + 1);
+  }
+  const NodeIndex* cols(int s) const {
+    return m_cols.data() + m_segment_start[static_cast<std::size_t>(s)];
+  }
+  std::size_t bytes() const {
+    return m_cols.size() * sizeof(NodeIndex) + m_run_start.size() * sizeof(std::uint32_t) +
+           m_segment_start.size() * sizeof(std::size_t);
+  }
+
+ private:
+  int m_count = 1;
+  std::size_t m_rows = 0;
+  std::vector<std::size_t> m_segment_start;  // count + 1: where each segment's entries begin
+  std::vector<std::uint32_t> m_run_start;    // count x (rows + 1), relative to the segment
+  std::vector<NodeIndex> m_cols;             // nnz, segment-major
+};
+
+}  // namespace hmfnet

@@ -1,0 +1,157 @@
+// CSR segmenting of the sparse force kernel (dynamics/column_segments.hpp): the segmented walk
+// equals the unblocked one bit for bit, for forces and for whole trajectories, at segment widths
+// from one column to nearly all of them, 1 and 2 threads, float64 and float32, 1, 3 and 8
+// replicas, 0/1 and weighted rows; on 2 ranks (label mpi) the same with ghost columns. The
+// widths are forced small so that networks of a few hundred nodes take many segments.
+#include <omp.h>
+
+#include <catch2/catch.hpp>
+#include <cstdint>
+#include <vector>
+
+#include "dynamics/column_segments.hpp"
+#include "dynamics/integrator.hpp"
+#include "dynamics/network_force.hpp"
+#include "dynamics/team.hpp"
+#include "network/erdos_renyi.hpp"
+#include "parallel/distributed_network.hpp"
+#include "support/small_networks.hpp"
+
+using namespace hmfnet;
+
+namespace {
+
+struct Evaluation {
+  std::vector<double> g, y;
+  ForceSums sums;
+  int segments = 0;
+};
+
+Evaluation evaluate(const DistributedNetwork& d, ForcePrecision p, NodeIndex width,
+                    const RotorState& s) {
+  NetworkForce force(d, p, width);
+  Evaluation e;
+  force.prepare(s, e.g, e.sums);
+  in_team([&] { force.evaluate(s, e.g, e.sums); });
+  e.y = force.local_fields();
+  e.segments = force.segments();
+  return e;
+}
+
+RotorState state(const DistributedNetwork& d, int replicas) {
+  std::vector<InitialCondition> ic;
+  for (int b = 0; b < replicas; ++b) ic.push_back({6.0, 1.0, static_cast<std::uint64_t>(b + 3)});
+  return initial_state(d.first_row(), d.local_size(), ic);
+}
+
+// Exact equality of every output: g, the local fields y and both sums of every replica.
+bool same_bits(const Evaluation& a, const Evaluation& b) {
+  return a.g == b.g && a.y == b.y && a.sums.order == b.sums.order &&
+         a.sums.coupling == b.sums.coupling;
+}
+
+// Threads for the scope, restored after.
+struct Threads {
+  explicit Threads(int n) : m_saved(omp_get_max_threads()) { omp_set_num_threads(n); }
+  ~Threads() { omp_set_num_threads(m_saved); }
+  Threads(const Threads&) = delete;
+  Threads& operator=(const Threads&) = delete;
+  int m_saved;
+};
+
+}  // namespace
+
+TEST_CASE("segmented force equals the unblocked force bit for bit [ER N=600, widths 1 to 577]",
+          "[column_segments]") {
+  // Degrees around 15, not multiples of 4 (the tail goes to partial 0), so runs start at every
+  // place mod 4 and a width of one column leaves most segments of a row empty.
+  const Network plain = erdos_renyi({600, 0.025, 17});
+  const Network heavy = test::pair_weighted(plain);
+  for (const Network* net : {&plain, &heavy}) {
+    const DistributedNetwork d(*net);
+    for (const ForcePrecision precision : {ForcePrecision::float64, ForcePrecision::float32}) {
+      for (const int replicas : {1, 3, 8}) {
+        const RotorState s = state(d, replicas);
+        const Evaluation unblocked = evaluate(d, precision, k_unsegmented, s);
+        REQUIRE(unblocked.segments == 1);
+        for (const int threads : {1, 2}) {
+          const Threads scope(threads);
+          for (const NodeIndex width : {1, 7, 64, 150, 577}) {
+            const Evaluation cut = evaluate(d, precision, width, s);
+            INFO((net->weighted() ? "weighted" : "0/1")
+                 << ", " << to_string(precision) << ", B = " << replicas << ", " << threads
+                 << " thread(s), width " << width << " (" << cut.segments << " segments)");
+            CHECK(cut.segments > 1);
+            CHECK(same_bits(cut, unblocked));
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("segmented leap-frog trajectories equal unblocked ones bit for bit [ER N=400, 40 steps]",
+          "[column_segments]") {
+  const Network net = test::pair_weighted(erdos_renyi({400, 0.04, 23}));
+  const DistributedNetwork d(net);
+  for (const ForcePrecision precision : {ForcePrecision::float64, ForcePrecision::float32}) {
+    for (const int replicas : {1, 8}) {
+      for (const int threads : {1, 2}) {
+        const Threads scope(threads);
+        const auto run = [&](NodeIndex width) {
+          NetworkForce force(d, precision, width);
+          RotorState s = state(d, replicas);
+          ForceEvaluation f(force);
+          f.update(s);
+          const std::vector<double> K(static_cast<std::size_t>(replicas), 40.0);
+          for (int step = 0; step < 40; ++step) LeapFrog().step(s, 0.05, K, f);
+          return s;
+        };
+        const RotorState unblocked = run(k_unsegmented), cut = run(29);
+        INFO(to_string(precision) << ", B = " << replicas << ", " << threads << " thread(s)");
+        CHECK(cut.theta == unblocked.theta);
+        CHECK(cut.p == unblocked.p);
+      }
+    }
+  }
+}
+
+TEST_CASE("segment runs put every row back together in CSR order; unsorted rows stay whole",
+          "[column_segments]") {
+  // Rows {0, 2, 5, 9}, {}, {1, 3, 4, 8, 9}, {7}; 10 columns in segments of 3.
+  const std::vector<EdgeOffset> row_ptr{0, 4, 4, 9, 10};
+  const std::vector<NodeIndex> cols{0, 2, 5, 9, 1, 3, 4, 8, 9, 7};
+  const ColumnSegments cut(row_ptr, cols, 10, 3);
+  REQUIRE(cut.count() == 4);
+  for (NodeIndex r = 0; r < 4; ++r) {
+    std::vector<NodeIndex> joined;
+    for (int s = 0; s < cut.count(); ++s) {
+      for (std::uint32_t k = cut.run_start(s)[r]; k < cut.run_start(s)[r + 1]; ++k) {
+        const NodeIndex c = cut.cols(s)[k];
+        CHECK(c / 3 == s);  // the run lies in its segment's columns
+        joined.push_back(c);
+      }
+    }
+    INFO("row " << r);
+    CHECK(joined ==
+          std::vector<NodeIndex>(cols.begin() + row_ptr[static_cast<std::size_t>(r)],
+                                 cols.begin() + row_ptr[static_cast<std::size_t>(r) + 1]));
+  }
+  const std::vector<NodeIndex> unsorted{0, 5, 2, 9, 1, 3, 4, 8, 9, 7};
+  CHECK(ColumnSegments(row_ptr, unsorted, 10, 3).count() == 1);
+  CHECK(ColumnSegments(row_ptr, cols, 10, 10).count() == 1);
+}
+
+TEST_CASE("automatic segment width: unblocked while the table fits in L2, half an L2 per segment",
+          "[column_segments]") {
+  const std::size_t l2 = std::size_t{2} << 20;
+  // ER N = 10^4, degree 100, 8 float64 replicas: 1.28 MB table, fits.
+  CHECK(automatic_segment_width(10'000, 1'000'000, 10'000, 128, l2) == k_unsegmented);
+  // N = 10^6, degree 100, float64, one replica: 16 MB table, 16 slices of 1 MiB (62,500 columns).
+  CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 16, l2) == 62'500);
+  // 8 replicas: 128 MB would take 123 slices, but 100 / 6 entries allow 16 segments.
+  CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 128, l2) == 62'500);
+  // Degree 10: fewer than two segments of 6 entries: unblocked.
+  CHECK(automatic_segment_width(1'000'000, 10'000'000, 1'000'000, 16, l2) == k_unsegmented);
+  CHECK(l2_cache_bytes() > 0);
+}
