@@ -58,17 +58,17 @@ template <typename T, int B, std::size_t C, bool Weighted>
 void rows_kernel(const RowKernelArgs<T>& a, NodeIndex rows, int runtime_b) {
   static_assert(C == 1 || C == 2 || C == 4, "the partials per pass divide 4");
   const int nb = B > 0 ? B : runtime_b;
-  constexpr int kMax = 64;
-  constexpr std::size_t kWidth = 2 * static_cast<std::size_t>(B > 0 ? B : kMax);
-  constexpr int kPasses = 4 / static_cast<int>(C);
+  constexpr int k_max = 64;
+  constexpr std::size_t k_width = 2 * static_cast<std::size_t>(B > 0 ? B : k_max);
+  constexpr int k_passes = 4 / static_cast<int>(C);
 #pragma omp for schedule(static)
   for (NodeIndex r = 0; r < rows; ++r) {
     const EdgeOffset begin = a.row_ptr[r], end = a.row_ptr[r + 1];
     const EdgeOffset full = begin + (end - begin) / 4 * 4;
-    T partial[4][kWidth];
-    for (int step = 0; step < kPasses; ++step) {
+    T partial[4][k_width];
+    for (int step = 0; step < k_passes; ++step) {
       const int pass = step * static_cast<int>(C);
-      T acc[C][kWidth];
+      T acc[C][k_width];
       for (std::size_t c = 0; c < C; ++c)
         for (int b = 0; b < 2 * nb; ++b) acc[c][b] = T(0);
       for (EdgeOffset k = begin; k < full; k += 4) {
@@ -93,7 +93,7 @@ void rows_kernel(const RowKernelArgs<T>& a, NodeIndex rows, int runtime_b) {
     const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(r) * nb;
     for (int b = 0; b < nb; ++b) {
       const std::size_t re = 2 * static_cast<std::size_t>(b), im = re + 1;
-      const T(&p)[4][kWidth] = partial;
+      const T(&p)[4][k_width] = partial;
       const double yc = (p[0][re] + p[1][re]) + (p[2][re] + p[3][re]);
       const double ys = static_cast<double>((p[0][im] + p[1][im]) + (p[2][im] + p[3][im]));
       const double c = o[re], s = o[im];
