@@ -92,7 +92,7 @@ std::string convergence_failures(const std::vector<SelfConsistentSolution>& solu
   if (large_k.status == SolveStatus::failed) failed += " K -> infinity: " + large_k.message + ";";
   if (failed.empty()) return failed;
   failed.pop_back();
-  return "eq:rSigmaBesselMain:" + failed;
+  return "self-consistent state (paper eq. (33)):" + failed;
 }
 
 }  // namespace

@@ -116,7 +116,9 @@ void add_generate_options(CLI::App& app, GenerateFlags& flags, const GenerateRun
 void add_rewire_options(CLI::App& app, RewireFlags& f, const Run& run) {
   app::RewireRequest& r = f.request;
   auto* c = app.add_subcommand(
-      "rewire", "Degree-preserving double-edge swaps until rho (eq:rhodef) reaches a target");
+      "rewire",
+      "Degree-preserving double-edge swaps until the degree correlation rho (paper eq. (17)) reaches a "
+      "target");
   c->add_option("input", r.input, "Network file (.mtx, .h5, edge list)")->required();
   c->add_option("--target-rho", r.target_rho, "Target degree correlation rho (> 0)")->required();
   c->add_option("--seed", r.seed, "Random seed")->required()->check(k_seed);

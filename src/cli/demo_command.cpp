@@ -57,7 +57,7 @@ void simulation_against_theory(const DemoFlags& f, bool root) {
   std::cout << "\nSimulation (leap-frog h = 0.01, T = 60, average over [30, 60]) against theory,\n"
             << "ER <d> = 100, sigma0 = 0.35, Omega = 6, K_c = " << std::setprecision(4) << Kc
             << "; " << sim.integration_seconds << " s of integration\n"
-            << "  K/K_c   <R>_t (sim)      R (eq:rSigmaBesselMain)   G sqrt(K/K_c-1)\n";
+            << "  K/K_c   <R>_t (sim)      R, paper eq. (33)         G sqrt(K/K_c-1)\n";
   for (std::size_t k = 0; k < p.K.size(); ++k) {
     const double ratio = p.K[k] / Kc;
     std::cout << std::fixed << std::setprecision(2) << std::setw(7) << ratio << std::setprecision(4)

@@ -40,10 +40,10 @@ void print_text(std::ostream& out, const app::TheoryOutcome& o) {
   out << std::setprecision(6) << "lambda             " << o.lambda << "\n"
       << "K_c                " << o.Kc << " (linear threshold, " << o.momenta
       << " momenta, sigma0 = " << o.sigma0 << ")\n"
-      << "K_c equilibrium    " << o.Kc_equilibrium << " (eq:rSigmaBesselMain leaves R = 0)\n"
+      << "K_c equilibrium    " << o.Kc_equilibrium << " (where paper eq. (33) leaves R = 0)\n"
       << "G                  " << o.G << "\n"
-      << "R_hat (K -> inf)   " << o.R_hat_iteration << " (eq:KtoInfinity, " << o.R_hat_iterations
-      << " iterations), " << o.R_hat_degree_approx << " (degree approximation eq:rd)\n\n"
+      << "R_hat (K -> inf)   " << o.R_hat_iteration << " (paper eq. (39), " << o.R_hat_iterations
+      << " iterations), " << o.R_hat_degree_approx << " (degree approximation, paper eq. (42))\n\n"
       << std::setw(12) << "K" << std::setw(10) << "K/K_c" << std::setw(12) << "R" << std::setw(12)
       << "G*sqrt" << std::setw(12) << "sigma^2" << std::setw(12) << "gamma" << std::setw(7)
       << "iter" << std::setw(12) << "residual"
