@@ -65,7 +65,7 @@ namespace {
 
 constexpr double k_pi = 3.14159265358979323846;
 constexpr double k_reject_below = 1e-3;  // p-value of the chi-square tests
-constexpr double k_z = 3.29;            // two-sided 0.001 level of a normal deviate
+constexpr double k_z = 3.29;             // two-sided 0.001 level of a normal deviate
 constexpr NodeIndex k_rotor = 0;
 
 struct Reference {

@@ -277,7 +277,7 @@ void check_outlives(ClaimCheck& check, const std::string& at_n, const Life& dens
 struct Plan {
   std::vector<NodeIndex> network_sizes, complete_sizes, degrees;
   NodeIndex sweep_n = 0;
-  NodeIndex budget_cap = 0;           ///< the networks' T stops growing past K_N's at this N
+  NodeIndex budget_cap = 0;            ///< the networks' T stops growing past K_N's at this N
   int complete_replicas = k_replicas;  ///< K_N's lives spread most (header: the outlives check)
 };
 

@@ -61,16 +61,15 @@ Generation generation(const ErRequest& r) {
 
 Generation generation(const SfRequest& r) {
   validate(r);
-  const double d_min = r.d_min ? *r.d_min
-                               : power_law_d_min_for_mean(r.alpha, *r.mean_degree, r.cutoff);
+  const double d_min =
+      r.d_min ? *r.d_min : power_law_d_min_for_mean(r.alpha, *r.mean_degree, r.cutoff);
   const PowerLaw law{r.alpha, d_min, r.cutoff};
   std::shared_ptr<const EdgeSource> source = chung_lu_source(
       power_law_targets(r.n, law, r.seed), link_probability_from_name(r.link), r.seed);
   nlohmann::json p = {
       {"n", r.n}, {"alpha", r.alpha}, {"d_min", d_min}, {"link", r.link}, {"seed", r.seed}};
   p["cutoff"] = std::isinf(r.cutoff) ? nlohmann::json("none") : nlohmann::json(r.cutoff);
-  return {source, [source] { return network_from_source(*source); },
-          provenance("generate sf", p),
+  return {source, [source] { return network_from_source(*source); }, provenance("generate sf", p),
           empty_draw_refusal(r.d_min ? "--dmin" : "--mean-degree", r.n, r.seed)};
 }
 

@@ -8,7 +8,7 @@ namespace hmfnet::app {
 
 struct RewireRequest {
   std::string input;
-  double target_rho = 0.0;        ///< eq:rhodef
+  double target_rho = 0.0;  ///< eq:rhodef
   std::uint64_t seed = 0;
   std::int64_t max_attempts = 0;  ///< 0: 200 x edges
   std::string output;

@@ -130,8 +130,8 @@ TheoryOutcome theory(const TheoryRequest& request, const DistributedInput& input
   std::vector<SelfConsistentSolution> solutions;
   LargeKLimit large_k;
   ParallelSession::agree([&] {
-    const SelfConsistentSystem system(*net.product, net.components, perron.lambda,
-                                      request.sigma0, 0.0, perron.u);
+    const SelfConsistentSystem system(*net.product, net.components, perron.lambda, request.sigma0,
+                                      0.0, perron.u);
     solutions = system.sweep(Ks, options);
     large_k = solve_large_k_limit(*net.product, options);
   });

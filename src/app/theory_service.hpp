@@ -24,15 +24,15 @@ namespace hmfnet::app {
 /// The synchronized state at one K (eq:rSigmaBesselMain, warm-started along the K asked).
 struct TheoryPoint {
   double K = 0.0;
-  double K_over_Kc = 0.0;         ///< K over the linear threshold K_c
-  bool linearly_stable = false;   ///< K < K_c: the incoherent start does not grow
+  double K_over_Kc = 0.0;        ///< K over the linear threshold K_c
+  bool linearly_stable = false;  ///< K < K_c: the incoherent start does not grow
   double R = 0.0;
-  double R_onset = 0.0;           ///< G sqrt(K / Kc_equilibrium - 1) (eq:globalOrderRInDeltaK)
+  double R_onset = 0.0;  ///< G sqrt(K / Kc_equilibrium - 1) (eq:globalOrderRInDeltaK)
   double sigma2 = 0.0;
-  std::string status;             ///< converged, incoherent or failed
+  std::string status;  ///< converged, incoherent or failed
   int iterations = 0;
   double residual = 0.0;
-  double gamma = 0.0;             ///< growth rate (eq:gammaKKc) above K_c; 0 below
+  double gamma = 0.0;  ///< growth rate (eq:gammaKKc) above K_c; 0 below
 };
 
 struct TheoryOutcome {

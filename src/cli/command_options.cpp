@@ -115,10 +115,10 @@ void add_generate_options(CLI::App& app, GenerateFlags& flags, const GenerateRun
 
 void add_rewire_options(CLI::App& app, RewireFlags& f, const Run& run) {
   app::RewireRequest& r = f.request;
-  auto* c = app.add_subcommand(
-      "rewire",
-      "Degree-preserving double-edge swaps until the degree correlation rho (paper eq. (17)) reaches a "
-      "target");
+  auto* c = app.add_subcommand("rewire",
+                               "Degree-preserving double-edge swaps until the degree correlation "
+                               "rho (paper eq. (17)) reaches a "
+                               "target");
   c->add_option("input", r.input, "Network file (.mtx, .h5, edge list)")->required();
   c->add_option("--target-rho", r.target_rho, "Target degree correlation rho (> 0)")->required();
   c->add_option("--seed", r.seed, "Random seed")->required()->check(k_seed);
@@ -177,9 +177,8 @@ void add_theory_options(CLI::App& app, TheoryFlags& f, const Run& run) {
                 "Initial momenta: gaussian or waterbag; K_c and gamma are that distribution's "
                 "linear threshold and growth rate");
   auto* k = c->add_option("--K", r.K, "Couplings K (comma-separated list)")->delimiter(',');
-  auto* kappa =
-      c->add_option("--K-over-Kc", r.K_over_Kc, "Couplings as K/K_c (comma-separated)")
-          ->delimiter(',');
+  auto* kappa = c->add_option("--K-over-Kc", r.K_over_Kc, "Couplings as K/K_c (comma-separated)")
+                    ->delimiter(',');
   k->excludes(kappa);
   c->add_flag("--json", f.json, "One JSON object on stdout");
   c->add_option("--tolerance", r.tolerance,

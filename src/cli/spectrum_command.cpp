@@ -58,8 +58,7 @@ std::string report_json(const app::SpectrumOutcome& o) {
 }
 
 void run(const SpectrumFlags& f) {
-  const app::SpectrumOutcome o =
-      app::spectrum(f.request, f.read.read_distributed(f.request.input));
+  const app::SpectrumOutcome o = app::spectrum(f.request, f.read.read_distributed(f.request.input));
   if (!is_root()) return;
   if (f.json) {
     std::cout << report_json(o) << std::endl;

@@ -51,8 +51,7 @@ void print_text(std::ostream& out, const app::TheoryOutcome& o) {
   for (const app::TheoryPoint& p : o.points) {
     out << std::setw(12) << p.K << std::setw(10) << p.K_over_Kc << std::setw(12) << p.R
         << std::setw(12) << p.R_onset << std::setw(12) << p.sigma2 << std::setw(12) << p.gamma
-        << std::setw(7) << p.iterations << std::setw(12) << p.residual << "  " << p.status
-        << "\n";
+        << std::setw(7) << p.iterations << std::setw(12) << p.residual << "  " << p.status << "\n";
   }
 }
 

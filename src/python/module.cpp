@@ -29,8 +29,8 @@ void start_session() {
   hmfnet::app::set_command_line("python: hmfnet module");
 }
 
-// ParameterError (a std::invalid_argument) becomes ValueError by pybind11's own rule: a value that a
-// request's check refuses (src/app: validate) is a ValueError with the CLI's words.
+// ParameterError (a std::invalid_argument) becomes ValueError by pybind11's own rule: a value that
+// a request's check refuses (src/app: validate) is a ValueError with the CLI's words.
 void register_errors(py::module_& m) {
   // A file or matrix that cannot be read, named with FILE:LINE (entry k of a Python matrix).
   py::register_exception<hmfnet::InputError>(m, "InputError", PyExc_ValueError);

@@ -213,8 +213,7 @@ void bind_network(py::module_& m) {
   bind_generate_requests(m);
   m.def("_generate_er", &generated<app::ErRequest>, py::arg("request"), py::arg("name") = "er");
   m.def("_generate_sf", &generated<app::SfRequest>, py::arg("request"), py::arg("name") = "sf");
-  m.def("_generate_sbm", &generated<app::SbmRequest>, py::arg("request"),
-        py::arg("name") = "sbm");
+  m.def("_generate_sbm", &generated<app::SbmRequest>, py::arg("request"), py::arg("name") = "sbm");
   m.def("_generate_regular", &generated<app::RegularRequest>, py::arg("request"),
         py::arg("name") = "regular");
   m.def(

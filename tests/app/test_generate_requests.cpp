@@ -17,14 +17,16 @@ TEST_CASE("An Erdos-Renyi request is refused in the CLI's words", "[app]") {
   valid.q = 0.1;
   CHECK(refusal<R>(valid, [](R&) {}) == "accepted");
   CHECK(refusal<R>(valid, [](R& r) { r.n = 0; }) == "--n: Value 0 not in range 1 to 2147483647");
-  CHECK(refusal<R>(valid, [](R& r) { r.n = 1; }).rfind("--n: value 1 is not allowed (allowed: >= 2;",
-                                                      0) == 0);
+  CHECK(refusal<R>(valid, [](R& r) {
+          r.n = 1;
+        }).rfind("--n: value 1 is not allowed (allowed: >= 2;", 0) == 0);
   CHECK(refusal<R>(valid, [](R& r) { r.q = std::nan(""); }) ==
         "--q: value nan is not allowed (allowed: 0 <= q <= 1)");
   CHECK(refusal<R>(valid, [](R& r) { r.q = 1.5; }) ==
         "--q: value 1.5 is not allowed (allowed: 0 <= q <= 1)");
-  CHECK(refusal<R>(valid, [](R& r) { r.q = 0.0; }).rfind(
-            "--q: value 0 is not allowed (allowed: 0 < q <= 1; it links no pair", 0) == 0);
+  CHECK(refusal<R>(valid, [](R& r) {
+          r.q = 0.0;
+        }).rfind("--q: value 0 is not allowed (allowed: 0 < q <= 1; it links no pair", 0) == 0);
   CHECK(refusal<R>(valid, [](R& r) { r.q.reset(), r.mean_degree = -1.0; }) ==
         "--mean-degree: value -1 is not allowed (allowed: >= 0)");
   CHECK(refusal<R>(valid, [](R& r) { r.mean_degree = 3.0; }) == "--q excludes --mean-degree");
@@ -61,8 +63,9 @@ TEST_CASE("Block-model, complete and regular requests are refused in the CLI's w
         "--half: Value 0 not in range 1 to 1073741823");
   CHECK(refusal<S>(sbm, [](S& r) { r.p_in = 1.5; }) ==
         "--p-in: value 1.5 is not allowed (allowed: 0 <= q <= 1)");
-  CHECK(refusal<S>(sbm, [](S& r) { r.p_in = 0.0; }).rfind(
-            "--p-in, --p-out: values 0 and 0 are not allowed", 0) == 0);
+  CHECK(refusal<S>(sbm, [](S& r) {
+          r.p_in = 0.0;
+        }).rfind("--p-in, --p-out: values 0 and 0 are not allowed", 0) == 0);
   using C = app::CompleteRequest;
   C complete;
   complete.n = 2;
@@ -77,6 +80,7 @@ TEST_CASE("Block-model, complete and regular requests are refused in the CLI's w
   CHECK(refusal<G>(regular, [](G&) {}) == "accepted");
   CHECK(refusal<G>(regular, [](G& r) { r.degree = -1; }) ==
         "--degree: Value -1 not in range 0 to 2147483646");
-  CHECK(refusal<G>(regular, [](G& r) { r.degree = 0; }).rfind(
-            "--degree: value 0 is not allowed (allowed: 1 <= d <= n - 1 = 50; d = 0", 0) == 0);
+  CHECK(refusal<G>(regular, [](G& r) {
+          r.degree = 0;
+        }).rfind("--degree: value 0 is not allowed (allowed: 1 <= d <= n - 1 = 50; d = 0", 0) == 0);
 }

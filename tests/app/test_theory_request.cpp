@@ -20,10 +20,12 @@ TEST_CASE("A theory request out of range is refused in the CLI's words", "[app]"
         "--sigma0: value -0.35 is not allowed (allowed: > 0)");
   CHECK(refusal<R>(valid, [](R& r) { r.momenta = "lorentz"; }) ==
         "--momenta: lorentz not in {gaussian,waterbag}");
-  CHECK(refusal<R>(valid, [](R& r) { r.K = {1.0, 0.0}; }) ==
-        "--K: value 0 is not allowed (allowed: > 0)");
-  CHECK(refusal<R>(valid, [](R& r) { r.K = {1.0, std::nan("")}; }) ==
-        "--K: value nan is not allowed (allowed: > 0)");
+  CHECK(refusal<R>(valid, [](R& r) {
+          r.K = {1.0, 0.0};
+        }) == "--K: value 0 is not allowed (allowed: > 0)");
+  CHECK(refusal<R>(valid, [](R& r) {
+          r.K = {1.0, std::nan("")};
+        }) == "--K: value nan is not allowed (allowed: > 0)");
   CHECK(refusal<R>(valid, [](R& r) { r.K = {}, r.K_over_Kc = {INFINITY}; }) ==
         "--K-over-Kc: value inf is not allowed (allowed: > 0)");
   CHECK(refusal<R>(valid, [](R& r) { r.K_over_Kc = {2.0}; }) == "--K excludes --K-over-Kc");

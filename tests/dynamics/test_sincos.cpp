@@ -107,8 +107,8 @@ TEST_CASE("sincos: exact values and the quadrant signs", "[sincos]") {
 TEST_CASE("sincos: beyond the reduced range and non-finite angles take the C library's values",
           "[sincos]") {
   const std::vector<double> x = {
-      k_reduced_range, std::nextafter(k_reduced_range, INFINITY),  -1e8, 1e300,
-      INFINITY,      std::numeric_limits<double>::quiet_NaN(), 0.5};
+      k_reduced_range, std::nextafter(k_reduced_range, INFINITY), -1e8, 1e300,
+      INFINITY,        std::numeric_limits<double>::quiet_NaN(),  0.5};
   std::vector<double> cs(2 * x.size());
   sincos_interleaved(x.data(), x.size(), cs.data());
   for (std::size_t k = 1; k < 4; ++k) {

@@ -8,8 +8,9 @@
 // value inside the range its option states. The ranges of the typed requests are their own checks
 // (src/app: validate), which the grammar's callbacks run before the work: these checks, written
 // apart from them, test them too (simulate: the grammar's part only, see check_simulate). The
-// work itself is replaced by those range checks (no network is read and nothing is run). Anything else -- another exception, a sanitizer report,
-// a value out of range that reached the work -- aborts with a message.
+// work itself is replaced by those range checks (no network is read and nothing is run). Anything
+// else -- another exception, a sanitizer report, a value out of range that reached the work --
+// aborts with a message.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -60,7 +61,8 @@ inline void check_sf(const app::SfRequest& f, const std::string& line) {
   const RangeChecks c(line);
   c.require(f.n >= 2, "--n < 2");
   c.require(f.alpha > 2.0 && std::isfinite(f.alpha), "--alpha not > 2");
-  c.require(f.d_min.has_value() != f.mean_degree.has_value(), "not one of --dmin and --mean-degree");
+  c.require(f.d_min.has_value() != f.mean_degree.has_value(),
+            "not one of --dmin and --mean-degree");
   c.require((f.d_min && *f.d_min > 0.0 && std::isfinite(*f.d_min)) ||
                 (f.mean_degree && *f.mean_degree > 0.0 && std::isfinite(*f.mean_degree)),
             "neither d_min nor a mean degree > 0");

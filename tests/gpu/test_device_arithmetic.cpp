@@ -61,8 +61,8 @@ std::vector<double> check_angles() {
     }
   }
   const double inf = std::numeric_limits<double>::infinity();
-  for (const double v : {k_reduced_range, std::nextafter(k_reduced_range, inf), -1e8, 1e300, inf, -inf,
-                         std::numeric_limits<double>::quiet_NaN()})
+  for (const double v : {k_reduced_range, std::nextafter(k_reduced_range, inf), -1e8, 1e300, inf,
+                         -inf, std::numeric_limits<double>::quiet_NaN()})
     x.push_back(v);
   return x;
 }

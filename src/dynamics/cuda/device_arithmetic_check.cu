@@ -108,8 +108,8 @@ bool run_arithmetic_check(const ArithmeticCheckInput& in, ArithmeticCheckOutput&
   if (n > 0) {
     const auto blocks = static_cast<unsigned>((n + k_threads - 1) / k_threads);
     arithmetic_kernel<<<blocks, k_threads>>>(theta.data(), p.data(), g.data(), n, in.c_kick,
-                                            in.coupling, in.c_drift, cs.data(), p_out.data(),
-                                            theta_out.data());
+                                             in.coupling, in.c_drift, cs.data(), p_out.data(),
+                                             theta_out.data());
     if (failed(cudaGetLastError(), "arithmetic kernel launch", message) ||
         failed(cudaDeviceSynchronize(), "arithmetic kernel", message)) {
       return false;
