@@ -57,8 +57,31 @@ std::size_t l2_cache_bytes() {
   return bytes;
 }
 
+std::size_t available_memory_bytes() {
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  unsigned long long kib = 0;
+  std::string unit;
+  while (meminfo >> key >> kib >> unit) {
+    if (key == "MemAvailable:") return static_cast<std::size_t>(kib) << 10;
+  }
+  const long pages = sysconf(_SC_AVPHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+  if (pages > 0 && page > 0)
+    return static_cast<std::size_t>(pages) * static_cast<std::size_t>(page);
+  return SIZE_MAX;
+}
+
+std::size_t segmented_bytes(EdgeOffset nnz, NodeIndex rows, int segments,
+                            std::size_t record_bytes) {
+  const auto n = static_cast<std::size_t>(rows);
+  return static_cast<std::size_t>(nnz) * sizeof(NodeIndex) +
+         static_cast<std::size_t>(segments) * (n + 1) * sizeof(std::uint32_t) +
+         n * 4 * record_bytes + n * sizeof(std::uint32_t);
+}
+
 NodeIndex automatic_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex rows,
-                                  std::size_t record_bytes, std::size_t l2_bytes) {
+                                  std::size_t record_bytes, std::size_t l2_bytes,
+                                  std::size_t memory_bytes) {
   const auto table = static_cast<double>(columns) * static_cast<double>(record_bytes);
   if (columns <= 0 || rows <= 0 || table <= static_cast<double>(l2_bytes)) return k_unsegmented;
   const double by_cache = std::ceil(table / (static_cast<double>(l2_bytes) / 2));
@@ -66,6 +89,9 @@ NodeIndex automatic_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex r
       std::floor(static_cast<double>(nnz) / static_cast<double>(rows) / k_min_entries_per_segment);
   const double segments = std::min(by_cache, by_entries);
   if (segments < 2) return k_unsegmented;
+  if (segmented_bytes(nnz, rows, static_cast<int>(segments), record_bytes) > memory_bytes / 2) {
+    return k_unsegmented;
+  }
   return static_cast<NodeIndex>(std::ceil(static_cast<double>(columns) / segments));
 }
 

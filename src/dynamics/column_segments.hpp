@@ -36,14 +36,27 @@ inline constexpr double k_min_entries_per_segment = 6.0;
 inline constexpr NodeIndex k_automatic_segments = 0;
 inline constexpr NodeIndex k_unsegmented = INT32_MAX;
 
+/// The memory this process may still take, in bytes: MemAvailable of /proc/meminfo, else the
+/// free pages (sysconf), else no limit known (the largest size_t).
+std::size_t available_memory_bytes();
+
+/// What segmenting `rows` rows of `nnz` entries into `segments` segments adds to the force:
+/// the column index copy (nnz x 4 B), the run starts (segments x (rows + 1) x 4 B), the carried
+/// partial sums (rows x 4 x record_bytes) and the row cursors (rows x 4 B).
+std::size_t segmented_bytes(EdgeOffset nnz, NodeIndex rows, int segments, std::size_t record_bytes);
+
 /// The rule: the whole column space (one segment) when the table, columns x record_bytes, fits
 /// in `l2_bytes`; else as many segments as slices of half the L2 (the other half holds the
 /// streams of column indices, run starts and carried sums; 1 MiB slices measured faster than
 /// 512 KiB and 2 MiB ones on the 2 MiB L2 of the Intel Xeon), but no more than leave
 /// k_min_entries_per_segment entries per row and segment, and one segment when that leaves
-/// fewer than two. record_bytes = 2 x replicas x sizeof(the table's type).
+/// fewer than two, or when the segments' memory (segmented_bytes: +980 MB at ER N = 10^6,
+/// degree 100, float64, 8 replicas) exceeds half of `memory_bytes`: a network that runs
+/// unblocked is never pushed out of memory for the speed-up. record_bytes = 2 x replicas x
+/// sizeof(the table's type).
 NodeIndex automatic_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex rows,
-                                  std::size_t record_bytes, std::size_t l2_bytes);
+                                  std::size_t record_bytes, std::size_t l2_bytes,
+                                  std::size_t memory_bytes);
 
 /// The rows cut by columns, as the paper stores them: one CSR per segment (its column indices
 /// in one array, segment after segment, and per segment the start of each row's run). Memory:

@@ -353,9 +353,10 @@ void NetworkForce::prepare_segments(NodeIndex rows, int replicas) {
   const NodeIndex width =
       m_segment_request != k_automatic_segments
           ? m_segment_request
-          : automatic_segment_width(
-                m_adjacency.columns, static_cast<EdgeOffset>(m_adjacency.cols.size()), rows,
-                2 * static_cast<std::size_t>(replicas) * value_bytes, l2_cache_bytes());
+          : automatic_segment_width(m_adjacency.columns,
+                                    static_cast<EdgeOffset>(m_adjacency.cols.size()), rows,
+                                    2 * static_cast<std::size_t>(replicas) * value_bytes,
+                                    l2_cache_bytes(), available_memory_bytes());
   if (width != m_segment_width) {
     m_segments = ColumnSegments(m_adjacency.row_ptr, m_adjacency.cols, m_adjacency.columns, width);
     m_segment_width = width;

@@ -145,13 +145,23 @@ TEST_CASE("segment runs put every row back together in CSR order; unsorted rows 
 TEST_CASE("automatic segment width: unblocked while the table fits in L2, half an L2 per segment",
           "[column_segments]") {
   const std::size_t l2 = std::size_t{2} << 20;
+  const std::size_t plenty = std::size_t{64} << 30;
   // ER N = 10^4, degree 100, 8 float64 replicas: 1.28 MB table, fits.
-  CHECK(automatic_segment_width(10'000, 1'000'000, 10'000, 128, l2) == k_unsegmented);
+  CHECK(automatic_segment_width(10'000, 1'000'000, 10'000, 128, l2, plenty) == k_unsegmented);
   // N = 10^6, degree 100, float64, one replica: 16 MB table, 16 slices of 1 MiB (62,500 columns).
-  CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 16, l2) == 62'500);
+  CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 16, l2, plenty) == 62'500);
   // 8 replicas: 128 MB would take 123 slices, but 100 / 6 entries allow 16 segments.
-  CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 128, l2) == 62'500);
+  CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 128, l2, plenty) == 62'500);
   // Degree 10: fewer than two segments of 6 entries: unblocked.
-  CHECK(automatic_segment_width(1'000'000, 10'000'000, 1'000'000, 16, l2) == k_unsegmented);
+  CHECK(automatic_segment_width(1'000'000, 10'000'000, 1'000'000, 16, l2, plenty) == k_unsegmented);
   CHECK(l2_cache_bytes() > 0);
+  // The segments' memory at N = 10^6, degree 100, float64, one replica: 400 MB of column
+  // indices, 64 MB of run starts (16 segments), 64 MB carried, 4 MB of cursors.
+  const std::size_t extra = segmented_bytes(100'000'000, 1'000'000, 16, 16);
+  CHECK(extra == 400'000'000 + 16 * 1'000'001 * 4 + 64'000'000 + 4'000'000);
+  // Segmented only while that leaves half the available memory.
+  CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 16, l2, 2 * extra) == 62'500);
+  CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 16, l2, 2 * extra - 1) ==
+        k_unsegmented);
+  CHECK(available_memory_bytes() > 0);
 }
