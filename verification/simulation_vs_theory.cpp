@@ -293,9 +293,10 @@ SimulationParameters schedule(const Panel& panel, double Kc, const std::vector<d
   const bool per_k_steps = sweep || sc.pipeline_steps;
   for (const double k : x) {
     p.K.push_back(k * Kc);
-    if (per_k_steps)
+    if (per_k_steps) {
       p.steps.push_back(
           verification::pipeline_step(k, panel.sigma0, p.duration, p.transient, panel.family));
+    }
   }
   p.replicas.clear();
   for (int b = 0; b < sc.replicas; ++b) {

@@ -123,10 +123,12 @@ double log_slope(const Curve& c, const std::vector<double>& count, double eps_ma
 
 std::vector<double> rows(const std::vector<Curve>& curves) {
   std::vector<double> out;  // per network and eps: eps, accelerated, plain, their seconds
-  for (const Curve& c : curves)
-    for (std::size_t k = 0; k < c.eps.size(); ++k)
+  for (const Curve& c : curves) {
+    for (std::size_t k = 0; k < c.eps.size(); ++k) {
       out.insert(out.end(), {c.eps[k], c.accelerated[k], c.plain[k], c.accelerated_seconds[k],
                              c.plain_seconds[k]});
+    }
+  }
   return out;
 }
 
@@ -187,9 +189,10 @@ int main(int argc, char** argv) {
   check.holds("SBM bipartite: accelerated (damped) solver unaffected",
               curves[4].all_accelerated && bipartite_slope > -0.25,
               "all converged, fitted slope " + ClaimCheck::format(bipartite_slope) + " > -0.25");
-  for (std::size_t i = 2; i < 4; ++i)
+  for (std::size_t i = 2; i < 4; ++i) {
     check.holds(names[i] + ": accelerated solver converges at every K/K_c - 1",
                 curves[i].all_accelerated, "cold starts, tolerance 1e-10");
+  }
   for (std::size_t i = 0; i < curves.size(); ++i) {
     double worst = 0.0;  // largest |dR| / (10 tol / eps / R) where both converged
     int points = 0;
