@@ -12,20 +12,12 @@
 #include "cli/commands.hpp"
 #include "cli/read_flags.hpp"
 #include "core/error.hpp"
+#include "core/json_fields.hpp"
 #include "dynamics/interrupt.hpp"
 
 namespace hmfnet::cli {
 
 namespace {
-
-// Each visited field under its name.
-struct JsonFields {
-  nlohmann::json& out;
-  template <class T>
-  void field(const char* name, const T& value) {
-    out[name] = value;
-  }
-};
 
 std::string report_json(const app::SimulateOutcome& o) {
   nlohmann::json out;
