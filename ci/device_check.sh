@@ -152,11 +152,46 @@ check_prebuilt_gpu_tests() {
   esac
 }
 
-checks=(check_gpu_label)
+# shellcheck disable=SC2317  # called through the list checks
+# The benchmark table (bench/gpu/ensemble_rates.cpp): rates beside the bounds measured in the
+# same run; its table is printed again before the summary.
+check_bench() {
+  local log="$OUT/runs.log" rc=0 t0=$EPOCHREALTIME
+  echo "== hmfnet_gpu_ensemble_rates" >>"$log"
+  bounded "$(limit_for 120)" "$log" "$bin_dir/hmfnet_gpu_ensemble_rates" || rc=$?
+  case $rc in
+    0) record "benchmark table" pass "$(elapsed_since "$t0")" "runs.log" ;;
+    77) record "benchmark table" skip "$(elapsed_since "$t0")" "no device" ;;
+    *) record "benchmark table" fail "$(elapsed_since "$t0")" "$(exit_text "$rc"), see runs.log" ;;
+  esac
+}
+
+# shellcheck disable=SC2317  # called through the list checks
+# The QSS campaign on K_N (verification/gpu/qss_lifetime_gpu.cpp): its data come back as
+# qss_gpu.json and qss_gpu.f64 for paper/scripts/qss_lifetime_gpu.py. Its own wall budget is
+# what the check's budget leaves, less 30 s for writing and the table.
+check_qss() {
+  local log="$OUT/runs.log" rc=0 t0=$EPOCHREALTIME limit budget
+  limit=$(limit_for "${HMFNET_QSS_LIMIT_S:-260}")
+  budget=$((limit - 30))
+  [ "$budget" -gt 10 ] || { record "QSS campaign" skip 0 "no time left in the budget"; return 0; }
+  echo "== hmfnet_gpu_qss_lifetime (budget $budget s)" >>"$log"
+  bounded "$limit" "$log" "$bin_dir/hmfnet_gpu_qss_lifetime" \
+    --sizes "${HMFNET_QSS_SIZES:-20000,10000,5000,2000,1600,1000}" --replicas 32 --lives 3 \
+    --budget-s "$budget" --out "$OUT" || rc=$?
+  case $rc in
+    0) record "QSS campaign" pass "$(elapsed_since "$t0")" "qss_gpu.json, qss_gpu.f64" ;;
+    77) record "QSS campaign" skip "$(elapsed_since "$t0")" "no device" ;;
+    *) record "QSS campaign" fail "$(elapsed_since "$t0")" "$(exit_text "$rc"), see runs.log" ;;
+  esac
+}
+
+checks=(check_gpu_label check_bench check_qss)
 
 echo "== device"
 show_device
 echo "== build ($build)"
+bin_dir="$build/bin"
 if find_tools && build_standalone; then
   for c in "${checks[@]}"; do
     echo "== $c"
@@ -167,8 +202,18 @@ else
   echo "== build failed: see $OUT/build.log"
   tail -n 30 "$OUT/build.log" 2>/dev/null || true
   check_prebuilt_gpu_tests
+  # The benchmark and the campaign as prepared on the CPU machine, where they were built.
+  bin_dir="$prepared/bin"
+  for c in check_bench check_qss; do
+    if [ -x "$bin_dir/hmfnet_gpu_ensemble_rates" ]; then "$c" || record "$c" fail - "exit $?"; fi
+  done
 fi
 
+if [ -f "$OUT/runs.log" ]; then
+  echo
+  grep -A 20 -E '^kind +prec' "$OUT/runs.log" | grep -v '^==' || true
+  grep -E '^(N = |wall )' "$OUT/runs.log" || true
+fi
 {
   echo
   echo "== device check on: $device_name"

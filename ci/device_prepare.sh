@@ -44,7 +44,7 @@ if command -v nvidia-smi >/dev/null && nvidia-smi -L >/dev/null 2>&1; then expec
 rc=0
 "$exe" >"$logs/gpu-tests-direct.log" 2>&1 || rc=$?
 [ "$rc" -eq "$expected" ] || die "$exe exited $rc here, expected $expected (see $logs/gpu-tests-direct.log)"
-cp "$exe" build-device/bin/
+cp "$exe" "$scratch/bin/hmfnet_gpu_ensemble_rates" "$scratch/bin/hmfnet_gpu_qss_lifetime" build-device/bin/
 changed=""
 [ -z "$(git status --porcelain -- src tests/gpu ci/device cmake)" ] || changed=" with uncommitted changes"
 printf 'built on %s from %s%s (nvcc %s; %s)\n' "$(date -u +%F)" "$(git rev-parse --short HEAD)" \

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "dynamics/splitting_coefficients.hpp"
 #include "dynamics/team.hpp"
 
 namespace hmfnet {
@@ -118,23 +119,13 @@ void KickDriftSplitting::advance(RotorState& state, double h, const std::vector<
 }
 
 KickDriftSplitting yoshida4() {
-  const double cube_root_2 = std::cbrt(2.0);
-  const double w1 = 1.0 / (2.0 - cube_root_2);
-  const double w0 = -cube_root_2 / (2.0 - cube_root_2);
-  // Leap-frog(w1 h) o leap-frog(w0 h) o leap-frog(w1 h), adjacent half kicks merged.
-  return {"yoshida4", 4, {0.5 * w1, 0.5 * (w1 + w0), 0.5 * (w0 + w1), 0.5 * w1}, {w1, w0, w1}};
+  SplittingCoefficients c = yoshida4_coefficients();
+  return {"yoshida4", 4, std::move(c.kicks), std::move(c.drifts)};
 }
 
 KickDriftSplitting blanes_moan4() {
-  // Blanes & Moan 2002, Table 3, SRKN_6^b (b_i: kicks, a_i: drifts).
-  const double b1 = 0.0829844064174052;
-  const double b2 = 0.396309801498368;
-  const double b3 = -0.0390563049223486;
-  const double b4 = 1.0 - 2.0 * (b1 + b2 + b3);
-  const double a1 = 0.245298957184271;
-  const double a2 = 0.604872665711080;
-  const double a3 = 0.5 - (a1 + a2);
-  return {"blanes_moan", 4, {b1, b2, b3, b4, b3, b2, b1}, {a1, a2, a3, a3, a2, a1}};
+  SplittingCoefficients c = blanes_moan4_coefficients();
+  return {"blanes_moan", 4, std::move(c.kicks), std::move(c.drifts)};
 }
 
 namespace {

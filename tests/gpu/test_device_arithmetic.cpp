@@ -70,7 +70,7 @@ std::vector<double> check_angles() {
 }  // namespace
 
 TEST_CASE("device sincos, kick and drift equal the host's bit for bit [10^5 angles, hard cases]",
-          "[gpu]") {
+          "[gpu][arithmetic]") {
   cuda::ArithmeticCheckInput in;
   in.theta = check_angles();
   std::mt19937_64 rng(91);

@@ -1,0 +1,381 @@
+// The complete graph's block-per-replica stepper (complete_graph_ensembles.hpp). Compiled with
+// --fmad=false (kernel_arithmetic.hpp says why).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "dynamics/cuda/complete_graph_ensembles.hpp"
+#include "dynamics/cuda/device_buffer.cuh"
+#include "dynamics/kernel_arithmetic.hpp"
+
+namespace hmfnet::cuda {
+
+namespace {
+
+// Z's tiles: min(N, k_max_tiles) per replica, rotor m in tile m mod tiles (neighbouring threads
+// touch neighbouring rotors: coalesced), so that their sums fit shared memory (32 KiB).
+constexpr std::int64_t k_max_tiles = 2048;
+// Stages of the longest splitting held (blanes_moan: 6 drifts, 7 kicks).
+constexpr int k_max_stages = 8;
+
+std::int64_t tile_count(std::int64_t n) { return n < k_max_tiles ? n : k_max_tiles; }
+
+struct SystemInfo {
+  std::int64_t n;
+  int replicas;
+  double K;
+  std::int64_t tiles;
+  std::int64_t state_offset;   // into theta and p (replica-major inside the system)
+  std::int64_t record_offset;  // into the records
+  std::int64_t record_every;
+  std::int64_t records;
+  std::int64_t steps_before;  // of this launch
+  std::int64_t steps;         // this launch
+};
+
+struct Table {
+  int stages;                     // drifts
+  double kick[k_max_stages + 1];  // b_i h
+  double drift[k_max_stages];     // a_i h
+};
+
+struct Arrays {
+  const SystemInfo* systems;
+  const int* block_system;
+  const int* block_replica;
+  double* theta;
+  double* p;
+  double* cs;      // per rotor [cos, sin] of the current angle
+  double* z;       // per block [Re Z, Im Z] at the current state
+  double* r_sum;   // per block: the running sum of R over the open record interval
+  double* R_mean;  // records
+  double* energy;  // records
+};
+
+// The fixed pairwise tree over `tiles` sums (stride 1, 2, 4, ...), leaving the total in
+// sums[0]; the same additions whatever blockDim is.
+__device__ void tree_sum(double* sums_c, double* sums_s, int tiles) {
+  __syncthreads();
+  for (int stride = 1; stride < tiles; stride *= 2) {
+    for (int i = 2 * stride * static_cast<int>(threadIdx.x); i + stride < tiles;
+         i += 2 * stride * static_cast<int>(blockDim.x)) {
+      sums_c[i] += sums_c[i + stride];
+      sums_s[i] += sums_s[i + stride];
+    }
+    __syncthreads();
+  }
+}
+
+__global__ void complete_graph_kernel(Arrays a, Table table, bool evaluate_only) {
+  extern __shared__ double shared[];
+  const SystemInfo sys = a.systems[a.block_system[blockIdx.x]];
+  const int b = a.block_replica[blockIdx.x];
+  const std::int64_t n = sys.n;
+  const int tiles = static_cast<int>(sys.tiles);
+  double* sums_c = shared;
+  double* sums_s = shared + k_max_tiles;
+  double* __restrict__ theta = a.theta + sys.state_offset + b * n;
+  double* __restrict__ p = a.p + sys.state_offset + b * n;
+  double* __restrict__ cs = a.cs + 2 * (sys.state_offset + b * n);
+  const double inverse_n = 1.0 / static_cast<double>(n);
+  const double K = sys.K;
+
+  // Z of the current angles: [cos, sin] formed and summed tile by tile.
+  if (evaluate_only) {
+    for (int t = static_cast<int>(threadIdx.x); t < tiles; t += static_cast<int>(blockDim.x)) {
+      double zc = 0.0, zs = 0.0;
+      for (std::int64_t m = t; m < n; m += tiles) {
+        double c = 0.0, s = 0.0;
+        sincos_one(theta[m], c, s);
+        cs[2 * m] = c;
+        cs[2 * m + 1] = s;
+        zc += c;
+        zs += s;
+      }
+      sums_c[t] = zc;
+      sums_s[t] = zs;
+    }
+    tree_sum(sums_c, sums_s, tiles);
+    if (threadIdx.x == 0) {
+      a.z[2 * blockIdx.x] = sums_c[0];
+      a.z[2 * blockIdx.x + 1] = sums_s[0];
+    }
+    return;
+  }
+
+  LocalField Z{a.z[2 * blockIdx.x], a.z[2 * blockIdx.x + 1]};
+  double r_sum = a.r_sum[blockIdx.x];
+  const double last_kick = table.kick[table.stages];
+  bool pending = false;
+  for (std::int64_t step = 0; step < sys.steps; ++step) {
+    for (int i = 0; i < table.stages; ++i) {
+      const bool kick_first = pending && i == 0;
+      for (int t = static_cast<int>(threadIdx.x); t < tiles; t += static_cast<int>(blockDim.x)) {
+        double zc = 0.0, zs = 0.0;
+        for (std::int64_t m = t; m < n; m += tiles) {
+          // y_n = Z (a = 1, diagonal kept): rank_one_force.cpp's g.
+          const double g = coupling_force(inverse_n, cs[2 * m], cs[2 * m + 1], Z);
+          double pm = p[m];
+          if (kick_first) pm = kicked_momentum(pm, last_kick, K, g);
+          pm = kicked_momentum(pm, table.kick[i], K, g);
+          const double th = drifted_angle(theta[m], table.drift[i], pm);
+          p[m] = pm;
+          theta[m] = th;
+          double c = 0.0, s = 0.0;
+          sincos_one(th, c, s);
+          cs[2 * m] = c;
+          cs[2 * m + 1] = s;
+          zc += c;
+          zs += s;
+        }
+        sums_c[t] = zc;
+        sums_s[t] = zs;
+      }
+      tree_sum(sums_c, sums_s, tiles);
+      Z = LocalField{sums_c[0], sums_s[0]};
+      __syncthreads();  // every thread has read Z before the tiles are written again
+    }
+    pending = true;
+    const double modulus = std::sqrt(Z.re * Z.re + Z.im * Z.im);
+    r_sum += modulus * inverse_n;
+    const std::int64_t done = sys.steps_before + step + 1;
+    if (done % sys.record_every != 0) continue;
+    // A record: the pending kick applied (the CPU's separate kick, the same bits), then
+    // sum p^2 / 2 by the same tiles and tree.
+    for (int t = static_cast<int>(threadIdx.x); t < tiles; t += static_cast<int>(blockDim.x)) {
+      double kinetic = 0.0;
+      for (std::int64_t m = t; m < n; m += tiles) {
+        const double g = coupling_force(inverse_n, cs[2 * m], cs[2 * m + 1], Z);
+        const double pm = kicked_momentum(p[m], last_kick, K, g);
+        p[m] = pm;
+        kinetic += 0.5 * pm * pm;
+      }
+      sums_c[t] = kinetic;
+      sums_s[t] = 0.0;
+    }
+    pending = false;
+    tree_sum(sums_c, sums_s, tiles);
+    const std::int64_t record = done / sys.record_every - 1;
+    if (threadIdx.x == 0 && record < sys.records) {
+      const std::int64_t at = sys.record_offset + b * sys.records + record;
+      a.R_mean[at] = r_sum / static_cast<double>(sys.record_every);
+      a.energy[at] = sums_c[0] - K * (Z.re * Z.re + Z.im * Z.im) * (0.5 * inverse_n);
+    }
+    r_sum = 0.0;
+    __syncthreads();
+  }
+  if (pending) {
+    for (std::int64_t m = threadIdx.x; m < n; m += blockDim.x) {
+      const double g = coupling_force(inverse_n, cs[2 * m], cs[2 * m + 1], Z);
+      p[m] = kicked_momentum(p[m], last_kick, K, g);
+    }
+  }
+  if (threadIdx.x == 0) {
+    a.z[2 * blockIdx.x] = Z.re;
+    a.z[2 * blockIdx.x + 1] = Z.im;
+    a.r_sum[blockIdx.x] = r_sum;
+  }
+}
+
+}  // namespace
+
+struct CompleteGraphEnsembles::Impl {
+  std::vector<CompleteGraphSystem> systems;
+  std::vector<SystemInfo> info;
+  std::vector<std::int64_t> done;
+  int threads = 512;
+  int blocks = 0;
+  DeviceBuffer<SystemInfo> d_info;
+  DeviceBuffer<int> block_system, block_replica;
+  DeviceBuffer<double> theta, p, cs, z, r_sum, R_mean, energy;
+
+  Arrays arrays() const {
+    return {
+        d_info.data(), block_system.data(), block_replica.data(), theta.data(), p.data(), cs.data(),
+        z.data(),      r_sum.data(),        R_mean.data(),        energy.data()};
+  }
+
+  void launch(const Table& table, bool evaluate_only) {
+    d_info.upload(info.data(), info.size());
+    const std::size_t shared = 2 * k_max_tiles * sizeof(double);
+    complete_graph_kernel<<<static_cast<unsigned>(blocks), static_cast<unsigned>(threads),
+                            shared>>>(arrays(), table, evaluate_only);
+    check_launch("complete graph kernel");
+  }
+};
+
+CompleteGraphEnsembles::CompleteGraphEnsembles(std::vector<CompleteGraphSystem> systems,
+                                               int threads_per_block) {
+  if (threads_per_block < 32 || threads_per_block > 1024 || threads_per_block % 32 != 0) {
+    throw DeviceError("complete graph ensembles: threads per block " +
+                      std::to_string(threads_per_block) + " is not a multiple of 32 in [32, 1024]");
+  }
+  std::int64_t state = 0, records = 0;
+  int blocks = 0;
+  std::vector<SystemInfo> info;
+  for (const auto& s : systems) {
+    if (s.n < 1 || s.n > INT32_MAX || s.replicas < 1 || s.record_every < 1 || s.records < 0) {
+      throw DeviceError(
+          "complete graph ensembles: a system needs 1 <= N < 2^31, replicas >= 1 "
+          "and record_every >= 1");
+    }
+    info.push_back(
+        {s.n, s.replicas, s.K, tile_count(s.n), state, records, s.record_every, s.records, 0, 0});
+    state += s.n * s.replicas;
+    records += s.records * s.replicas;
+    blocks += s.replicas;
+  }
+  require_device();
+  const auto bytes = static_cast<std::size_t>(state) * 4 * sizeof(double) +
+                     static_cast<std::size_t>(records) * 2 * sizeof(double) +
+                     static_cast<std::size_t>(blocks) * (3 * sizeof(double) + 2 * sizeof(int));
+  require_memory(bytes, "the complete graph ensembles");
+  m_impl = std::make_unique<Impl>();
+  Impl& e = *m_impl;
+  e.systems = std::move(systems);
+  e.info = std::move(info);
+  e.done.assign(e.systems.size(), 0);
+  e.threads = threads_per_block;
+  e.blocks = blocks;
+  std::vector<int> bs, br;
+  for (std::size_t s = 0; s < e.systems.size(); ++s) {
+    for (int b = 0; b < e.systems[s].replicas; ++b) {
+      bs.push_back(static_cast<int>(s));
+      br.push_back(b);
+    }
+  }
+  e.block_system.upload(bs.data(), bs.size());
+  e.block_replica.upload(br.data(), br.size());
+  const auto st = static_cast<std::size_t>(state);
+  e.theta.allocate(st);
+  e.p.allocate(st);
+  e.cs.allocate(2 * st);
+  e.z.allocate(2 * static_cast<std::size_t>(blocks));
+  const std::vector<double> zeros(static_cast<std::size_t>(blocks), 0.0);
+  e.r_sum.upload(zeros.data(), zeros.size());
+  const std::vector<double> nan_records(static_cast<std::size_t>(records), NAN);
+  e.R_mean.upload(nan_records.data(), nan_records.size());
+  e.energy.upload(nan_records.data(), nan_records.size());
+}
+
+CompleteGraphEnsembles::~CompleteGraphEnsembles() = default;
+
+std::size_t CompleteGraphEnsembles::systems() const { return m_impl->systems.size(); }
+
+void CompleteGraphEnsembles::set_state(std::size_t system, const std::vector<double>& theta,
+                                       const std::vector<double>& p) {
+  Impl& e = *m_impl;
+  const SystemInfo& s = e.info.at(system);
+  const auto cells = static_cast<std::size_t>(s.n * s.replicas);
+  if (theta.size() != cells || p.size() != cells) {
+    throw DeviceError("complete graph ensembles: the state must hold N x replicas values");
+  }
+  // The CPU's node-major layout to the blocks' replica-major one.
+  std::vector<double> t(cells), q(cells);
+  for (std::int64_t m = 0; m < s.n; ++m) {
+    for (int b = 0; b < s.replicas; ++b) {
+      t[static_cast<std::size_t>(b * s.n + m)] =
+          theta[static_cast<std::size_t>(m * s.replicas + b)];
+      q[static_cast<std::size_t>(b * s.n + m)] = p[static_cast<std::size_t>(m * s.replicas + b)];
+    }
+  }
+  check(cudaMemcpy(e.theta.data() + s.state_offset, t.data(), cells * sizeof(double),
+                   cudaMemcpyHostToDevice),
+        "cudaMemcpy to the device");
+  check(cudaMemcpy(e.p.data() + s.state_offset, q.data(), cells * sizeof(double),
+                   cudaMemcpyHostToDevice),
+        "cudaMemcpy to the device");
+  // Z of every system at its current angles (systems not set yet compute garbage harmlessly:
+  // their Z is formed again when they are set).
+  e.launch(Table{}, true);
+}
+
+void CompleteGraphEnsembles::get_state(std::size_t system, std::vector<double>& theta,
+                                       std::vector<double>& p) const {
+  const Impl& e = *m_impl;
+  const SystemInfo& s = e.info.at(system);
+  const auto cells = static_cast<std::size_t>(s.n * s.replicas);
+  std::vector<double> t(cells), q(cells);
+  check(cudaMemcpy(t.data(), e.theta.data() + s.state_offset, cells * sizeof(double),
+                   cudaMemcpyDeviceToHost),
+        "cudaMemcpy to the host");
+  check(cudaMemcpy(q.data(), e.p.data() + s.state_offset, cells * sizeof(double),
+                   cudaMemcpyDeviceToHost),
+        "cudaMemcpy to the host");
+  theta.resize(cells);
+  p.resize(cells);
+  for (std::int64_t m = 0; m < s.n; ++m) {
+    for (int b = 0; b < s.replicas; ++b) {
+      theta[static_cast<std::size_t>(m * s.replicas + b)] =
+          t[static_cast<std::size_t>(b * s.n + m)];
+      p[static_cast<std::size_t>(m * s.replicas + b)] = q[static_cast<std::size_t>(b * s.n + m)];
+    }
+  }
+}
+
+void CompleteGraphEnsembles::advance(const SplittingCoefficients& splitting, double h,
+                                     const std::vector<std::int64_t>& steps) {
+  Impl& e = *m_impl;
+  const auto& kicks = splitting.kicks;
+  const auto& drifts = splitting.drifts;
+  if (drifts.empty() || kicks.size() != drifts.size() + 1 ||
+      drifts.size() > static_cast<std::size_t>(k_max_stages)) {
+    throw DeviceError("complete graph ensembles: a splitting of 1 to 8 drifts and one more kick");
+  }
+  if (steps.size() != e.systems.size()) {
+    throw DeviceError("complete graph ensembles: one step count per system");
+  }
+  Table table{};
+  table.stages = static_cast<int>(drifts.size());
+  for (std::size_t i = 0; i < drifts.size(); ++i) table.drift[i] = drifts[i] * h;
+  for (std::size_t i = 0; i < kicks.size(); ++i) table.kick[i] = kicks[i] * h;
+  for (std::size_t s = 0; s < e.systems.size(); ++s) {
+    e.info[s].steps_before = e.done[s];
+    e.info[s].steps = std::max<std::int64_t>(0, steps[s]);
+  }
+  e.launch(table, false);
+  for (std::size_t s = 0; s < e.systems.size(); ++s) e.done[s] += e.info[s].steps;
+}
+
+std::int64_t CompleteGraphEnsembles::steps_done(std::size_t system) const {
+  return m_impl->done.at(system);
+}
+
+CompleteGraphRecords CompleteGraphEnsembles::records(std::size_t system) const {
+  const Impl& e = *m_impl;
+  const SystemInfo& s = e.info.at(system);
+  CompleteGraphRecords r;
+  r.written = std::min(s.records, e.done[system] / s.record_every);
+  const auto count = static_cast<std::size_t>(s.records * s.replicas);
+  r.R_mean.resize(count);
+  r.energy.resize(count);
+  if (count > 0) {
+    check(cudaMemcpy(r.R_mean.data(), e.R_mean.data() + s.record_offset, count * sizeof(double),
+                     cudaMemcpyDeviceToHost),
+          "cudaMemcpy to the host");
+    check(cudaMemcpy(r.energy.data(), e.energy.data() + s.record_offset, count * sizeof(double),
+                     cudaMemcpyDeviceToHost),
+          "cudaMemcpy to the host");
+  }
+  return r;
+}
+
+std::vector<double> CompleteGraphEnsembles::order_sums(std::size_t system) const {
+  const Impl& e = *m_impl;
+  int first = 0;
+  for (std::size_t s = 0; s < system; ++s) first += e.systems[s].replicas;
+  std::vector<double> z(2 * static_cast<std::size_t>(e.systems.at(system).replicas));
+  check(cudaMemcpy(z.data(), e.z.data() + 2 * first, z.size() * sizeof(double),
+                   cudaMemcpyDeviceToHost),
+        "cudaMemcpy to the host");
+  return z;
+}
+
+void CompleteGraphEnsembles::synchronize() const {
+  check(cudaDeviceSynchronize(), "complete graph ensembles");
+}
+
+}  // namespace hmfnet::cuda

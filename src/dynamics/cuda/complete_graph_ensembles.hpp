@@ -1,0 +1,69 @@
+#pragma once
+// Replicas of the all-to-all HMF (K_N with self-loops, A = 1 1^T: the rank-one force of
+// rank_one_force.hpp with a = 1 and the diagonal) stepped on a CUDA device, one thread block per
+// replica for many steps per launch. Several systems (sizes N) run side by side in one launch,
+// as a finite-size campaign needs (qss_lifetime). Per step and stage a block updates its rotors
+// (the CPU's kick, kick-drift and sincos, kernel_arithmetic.hpp) and sums Z = sum_m e^{i theta_m}
+// over min(N, 2048) fixed tiles (rotor m in tile m mod tiles), each in order, then the tiles by a
+// fixed pairwise tree: the bits depend on N alone, not on the launch (threads per block), and
+// repeat run to run.
+// The CPU sums Z in another fixed order (2048-row blocks), so the two agree to rounding, not to
+// the bit (tests/gpu/test_complete_graph_ensembles.cpp: 1e-12 relative over 100 steps).
+//
+// Records: every `record_every` steps of a system, each replica's R averaged over the steps of
+// that interval (R = |Z| / N after each step) and its energy at the interval's end,
+// H = sum p^2 / 2 - K |Z|^2 / (2N).
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "dynamics/cuda/sparse_ensemble.hpp"
+#include "dynamics/splitting_coefficients.hpp"
+
+namespace hmfnet::cuda {
+
+struct CompleteGraphSystem {
+  std::int64_t n = 0;
+  int replicas = 1;
+  double K = 1.0;
+  std::int64_t record_every = 1;  ///< steps per record
+  std::int64_t records = 0;       ///< records kept (later ones are dropped)
+};
+
+/// One system's records, replica-major: value[b * records + i].
+struct CompleteGraphRecords {
+  std::int64_t written = 0;  ///< records completed so far
+  std::vector<double> R_mean, energy;
+};
+
+class CompleteGraphEnsembles {
+ public:
+  /// Throws DeviceError where no device can run this build, when memory does not suffice
+  /// (checked before allocating), or for N < 1 or N > 2^31 - 1.
+  explicit CompleteGraphEnsembles(std::vector<CompleteGraphSystem> systems,
+                                  int threads_per_block = 512);
+  ~CompleteGraphEnsembles();
+  CompleteGraphEnsembles(const CompleteGraphEnsembles&) = delete;
+  CompleteGraphEnsembles& operator=(const CompleteGraphEnsembles&) = delete;
+
+  std::size_t systems() const;
+  /// A system's state in the CPU's layout, rows x replicas (k = n * replicas + b).
+  void set_state(std::size_t system, const std::vector<double>& theta,
+                 const std::vector<double>& p);
+  void get_state(std::size_t system, std::vector<double>& theta, std::vector<double>& p) const;
+  /// Advances each system by steps[s] steps (0 leaves it as it is), in one launch.
+  void advance(const SplittingCoefficients& splitting, double h,
+               const std::vector<std::int64_t>& steps);
+  /// Steps done so far by a system.
+  std::int64_t steps_done(std::size_t system) const;
+  CompleteGraphRecords records(std::size_t system) const;
+  /// Z of each replica of a system at its current state, [Re, Im] per replica.
+  std::vector<double> order_sums(std::size_t system) const;
+  void synchronize() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> m_impl;
+};
+
+}  // namespace hmfnet::cuda

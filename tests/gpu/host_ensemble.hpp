@@ -1,0 +1,180 @@
+#pragma once
+// The CPU's step for the gpu tests, on the host: integrator.cpp's kick-drift splittings over
+// network_force.cpp's rows (sparse) or rank_one_force.cpp's Z (the complete graph), each cell
+// computed by the functions of dynamics/kernel_arithmetic.hpp in the CPU's order
+// (tests/dynamics/test_kernel_arithmetic.cpp ties these functions to the CPU kernels). The
+// device steppers are compared with it; it needs no Trilinos, so the device check's own build
+// (ci/device) has it.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "core/random.hpp"
+#include "dynamics/cuda/sparse_ensemble.hpp"
+#include "dynamics/kernel_arithmetic.hpp"
+#include "dynamics/splitting_coefficients.hpp"
+
+namespace hmfnet::gpu_test {
+
+/// An undirected random network: each pair an edge with probability degree / (n - 1), no
+/// self-loops, rows sorted (a CSR as the CPU stores it).
+inline cuda::HostCsr random_network(std::int64_t n, double degree, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::bernoulli_distribution edge(degree / static_cast<double>(n - 1));
+  std::vector<std::vector<std::int32_t>> rows(static_cast<std::size_t>(n));
+  for (std::int64_t i = 0; i < n; ++i) {
+    for (std::int64_t j = i + 1; j < n; ++j) {
+      if (!edge(rng)) continue;
+      rows[static_cast<std::size_t>(i)].push_back(static_cast<std::int32_t>(j));
+      rows[static_cast<std::size_t>(j)].push_back(static_cast<std::int32_t>(i));
+    }
+  }
+  cuda::HostCsr csr;
+  csr.rows = n;
+  csr.offsets.push_back(0);
+  for (auto& r : rows) {
+    std::sort(r.begin(), r.end());
+    csr.columns.insert(csr.columns.end(), r.begin(), r.end());
+    csr.offsets.push_back(static_cast<std::int64_t>(csr.columns.size()));
+  }
+  return csr;
+}
+
+/// The water-bag start of rotor_state.cpp (theta uniform on [0, 2 pi), p uniform on +-sqrt(3)
+/// sigma0, stream = row of seed + replica), rows x replicas.
+inline void waterbag(std::int64_t n, int replicas, double sigma0, std::uint64_t seed,
+                     std::vector<double>& theta, std::vector<double>& p) {
+  const auto cells = static_cast<std::size_t>(n * replicas);
+  theta.assign(cells, 0.0);
+  p.assign(cells, 0.0);
+  const double half_width = std::sqrt(3.0) * sigma0;
+  for (int b = 0; b < replicas; ++b) {
+    for (std::int64_t r = 0; r < n; ++r) {
+      Rng rng(seed + static_cast<std::uint64_t>(b), static_cast<std::uint64_t>(r));
+      const auto k = static_cast<std::size_t>(r * replicas + b);
+      theta[k] = 6.283185307179586476925286766559 * rng.uniform();
+      p[k] = half_width * (2.0 * rng.uniform() - 1.0);
+    }
+  }
+}
+
+/// The host stepper. complete = true: K_N with self-loops (y_n = Z, summed in
+/// OrderedColumnSums' 2048-row blocks); otherwise the network's rows in T.
+class HostEnsemble {
+ public:
+  HostEnsemble(cuda::HostCsr network, int replicas, bool float32)
+      : m_net(std::move(network)),
+        m_n(m_net.rows),
+        m_b(replicas),
+        m_w(static_cast<std::size_t>(replicas)),
+        m_float32(float32) {}
+  static HostEnsemble complete(std::int64_t n, int replicas) {
+    HostEnsemble e(cuda::HostCsr{n, {}, {}}, replicas, false);
+    e.m_complete = true;
+    return e;
+  }
+
+  std::vector<double> theta, p, K;
+
+  void set_state(std::vector<double> t, std::vector<double> q) {
+    theta = std::move(t);
+    p = std::move(q);
+    if (K.empty()) K.assign(m_w, 1.0);
+    evaluate();
+  }
+
+  void advance(const SplittingCoefficients& c, double h, std::int64_t steps) {
+    for (std::int64_t s = 0; s < steps; ++s) {
+      for (std::size_t i = 0; i < c.drifts.size(); ++i) {
+        for (std::size_t k = 0; k < cells(); ++k) {
+          p[k] = kicked_momentum(p[k], c.kicks[i] * h, K[k % m_w], m_g[k]);
+          theta[k] = drifted_angle(theta[k], c.drifts[i] * h, p[k]);
+        }
+        evaluate();
+      }
+      for (std::size_t k = 0; k < cells(); ++k) {
+        p[k] = kicked_momentum(p[k], c.kicks.back() * h, K[k % m_w], m_g[k]);
+      }
+    }
+  }
+
+  /// Per replica H = sum p^2 / 2 - K / (2N) sum Re(e^{-i theta_n} y_n), summed plainly.
+  std::vector<double> energy() const {
+    std::vector<double> e(m_w, 0.0);
+    for (std::size_t k = 0; k < cells(); ++k) {
+      e[k % m_w] += 0.5 * p[k] * p[k] - K[k % m_w] / (2.0 * static_cast<double>(m_n)) *
+                                            coupling_term(m_cs[2 * k], m_cs[2 * k + 1], m_y[k]);
+    }
+    return e;
+  }
+
+  /// Z per replica as [Re, Im] (complete graph).
+  const std::vector<double>& z() const { return m_z; }
+
+ private:
+  std::size_t cells() const { return static_cast<std::size_t>(m_n) * m_w; }
+
+  void evaluate() {
+    m_cs.assign(2 * cells(), 0.0);
+    m_cs32.assign(2 * cells(), 0.0F);
+    for (std::size_t k = 0; k < cells(); ++k) {
+      sincos_one(theta[k], m_cs[2 * k], m_cs[2 * k + 1]);
+      m_cs32[2 * k] = static_cast<float>(m_cs[2 * k]);
+      m_cs32[2 * k + 1] = static_cast<float>(m_cs[2 * k + 1]);
+    }
+    m_g.assign(cells(), 0.0);
+    m_y.assign(cells(), LocalField{0.0, 0.0});
+    if (m_complete) {
+      complete_fields();
+    } else {
+      for (std::size_t k = 0; k < cells(); ++k) {
+        const std::size_t row = k / m_w;
+        const int lane = static_cast<int>(k % m_w);
+        m_y[k] = m_float32 ? row_field<float, std::int64_t, std::int32_t>(
+                                 m_net.offsets[row], m_net.offsets[row + 1], m_net.columns.data(),
+                                 nullptr, m_cs32.data(), m_b, lane)
+                           : row_field<double, std::int64_t, std::int32_t>(
+                                 m_net.offsets[row], m_net.offsets[row + 1], m_net.columns.data(),
+                                 nullptr, m_cs.data(), m_b, lane);
+        m_g[k] =
+            coupling_force(1.0 / static_cast<double>(m_n), m_cs[2 * k], m_cs[2 * k + 1], m_y[k]);
+      }
+    }
+  }
+
+  // rank_one_force.cpp with a = 1 and the diagonal: Z by 2048-row blocks, each from 0 in order,
+  // the blocks in order from 0 (OrderedColumnSums), then y_n = Z.
+  void complete_fields() {
+    m_z.assign(2 * m_w, 0.0);
+    for (std::int64_t first = 0; first < m_n; first += 2048) {
+      std::vector<double> block(2 * m_w, 0.0);
+      for (std::int64_t r = first; r < std::min(m_n, first + 2048); ++r) {
+        for (std::size_t b = 0; b < m_w; ++b) {
+          const std::size_t k = static_cast<std::size_t>(r) * m_w + b;
+          block[2 * b] += 1.0 * m_cs[2 * k];
+          block[2 * b + 1] += 1.0 * m_cs[2 * k + 1];
+        }
+      }
+      for (std::size_t j = 0; j < block.size(); ++j) m_z[j] += block[j];
+    }
+    for (std::size_t k = 0; k < cells(); ++k) {
+      const std::size_t b = k % m_w;
+      m_y[k] = LocalField{m_z[2 * b], m_z[2 * b + 1]};
+      m_g[k] = coupling_force(1.0 / static_cast<double>(m_n), m_cs[2 * k], m_cs[2 * k + 1], m_y[k]);
+    }
+  }
+
+  cuda::HostCsr m_net;
+  std::int64_t m_n;
+  int m_b;
+  std::size_t m_w;
+  bool m_float32;
+  bool m_complete = false;
+  std::vector<double> m_cs, m_g, m_z;
+  std::vector<float> m_cs32;
+  std::vector<LocalField> m_y;
+};
+
+}  // namespace hmfnet::gpu_test

@@ -1,0 +1,208 @@
+// The device's sparse step against the CPU's (host_ensemble.hpp, the CPU's arithmetic in its
+// order): bit for bit in float64 and float32, with a K per replica; the same bits run to run
+// and whatever the threads per block; a run moved between device and host mid-way (the state
+// a checkpoint holds) goes on with the same bits both ways; the energy error falls as h^2
+// (leap-frog) and h^4 (yoshida4); float32's energy error against float64's; memory refused
+// before anything is allocated.
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "dynamics/cuda/sparse_ensemble.hpp"
+#include "host_ensemble.hpp"
+
+using namespace hmfnet;
+using hmfnet::gpu_test::HostEnsemble;
+
+namespace {
+
+constexpr std::size_t k_replicas = 3;
+
+const cuda::HostCsr& test_network() {
+  static const cuda::HostCsr net = gpu_test::random_network(1500, 12.0, 5);
+  return net;
+}
+
+// Cells whose bits differ (NaN only as NaN).
+std::size_t differing(const std::vector<double>& a, const std::vector<double>& b) {
+  if (a.size() != b.size()) return a.size() + b.size();
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    if (std::memcmp(&a[k], &b[k], sizeof(double)) != 0 && !(std::isnan(a[k]) && std::isnan(b[k])))
+      ++n;
+  }
+  return n;
+}
+
+struct Start {
+  std::vector<double> theta, p, K;
+};
+
+Start start(std::int64_t n) {
+  Start s;
+  gpu_test::waterbag(n, static_cast<int>(k_replicas), 0.6, 11, s.theta, s.p);
+  s.K = {1.0, 2.5, 6.0};  // one K per replica (--K-across-replicas)
+  return s;
+}
+
+// The device run: `steps` steps of `c` from the start.
+void device_run(cuda::DevicePrecision precision, int threads, const SplittingCoefficients& c,
+                double h, std::int64_t steps, std::vector<double>& theta, std::vector<double>& p) {
+  const Start s = start(test_network().rows);
+  cuda::SparseEnsemble e(test_network(), static_cast<int>(k_replicas), precision, threads);
+  e.set_coupling(s.K);
+  e.set_state(s.theta, s.p);
+  e.advance(c, h, steps);
+  e.get_state(theta, p);
+}
+
+HostEnsemble host_run(bool float32, const SplittingCoefficients& c, double h, std::int64_t steps) {
+  const Start s = start(test_network().rows);
+  HostEnsemble host(test_network(), static_cast<int>(k_replicas), float32);
+  host.K = s.K;
+  host.set_state(s.theta, s.p);
+  host.advance(c, h, steps);
+  return host;
+}
+
+// Max over replicas and records of |H(t) - H(0)| / |H(0)|, on the device, over T = 20 with
+// `h`: each replica's H from the ordered sums.
+double energy_error(cuda::DevicePrecision precision, const SplittingCoefficients& c, double h) {
+  const Start s = start(test_network().rows);
+  cuda::SparseEnsemble e(test_network(), static_cast<int>(k_replicas), precision);
+  e.set_coupling(s.K);
+  e.set_state(s.theta, s.p);
+  const double n = static_cast<double>(test_network().rows);
+  const auto energy = [&] {
+    const cuda::EnsembleSums sums = e.sums();
+    std::vector<double> H;
+    for (std::size_t b = 0; b < k_replicas; ++b) {
+      H.push_back(sums.kinetic[b] - s.K[b] / (2.0 * n) * sums.coupling[b]);
+    }
+    return H;
+  };
+  const std::vector<double> H0 = energy();
+  double worst = 0.0;
+  const auto per_record = static_cast<std::int64_t>(std::lround(1.0 / h));
+  for (int record = 0; record < 20; ++record) {
+    e.advance(c, h, per_record);
+    const std::vector<double> H = energy();
+    for (std::size_t b = 0; b < k_replicas; ++b)
+      worst = std::max(worst, std::abs(H[b] - H0[b]) / std::abs(H0[b]));
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST_CASE("float64 device steps are the CPU's bits over 100 leap-frog steps, a K per replica",
+          "[gpu][sparse]") {
+  std::vector<double> theta, p;
+  device_run(cuda::DevicePrecision::float64, 256, leap_frog_coefficients(), 0.05, 100, theta, p);
+  const HostEnsemble host = host_run(false, leap_frog_coefficients(), 0.05, 100);
+  CHECK(differing(theta, host.theta) == 0);
+  CHECK(differing(p, host.p) == 0);
+}
+
+TEST_CASE("float32 device steps are the CPU's float32 bits; yoshida4 and blanes_moan too",
+          "[gpu][sparse]") {
+  std::vector<double> theta, p;
+  device_run(cuda::DevicePrecision::float32, 256, leap_frog_coefficients(), 0.05, 100, theta, p);
+  const HostEnsemble host = host_run(true, leap_frog_coefficients(), 0.05, 100);
+  CHECK(differing(theta, host.theta) == 0);
+  CHECK(differing(p, host.p) == 0);
+  for (const auto& c : {yoshida4_coefficients(), blanes_moan4_coefficients()}) {
+    device_run(cuda::DevicePrecision::float64, 128, c, 0.1, 30, theta, p);
+    const HostEnsemble h = host_run(false, c, 0.1, 30);
+    CHECK(differing(theta, h.theta) == 0);
+    CHECK(differing(p, h.p) == 0);
+  }
+}
+
+TEST_CASE("the same bits run to run and for 64, 256 and 1024 threads per block", "[gpu][sparse]") {
+  std::vector<double> t0, p0, t1, p1;
+  device_run(cuda::DevicePrecision::float64, 256, yoshida4_coefficients(), 0.05, 200, t0, p0);
+  for (const int threads : {256, 64, 1024}) {
+    device_run(cuda::DevicePrecision::float64, threads, yoshida4_coefficients(), 0.05, 200, t1, p1);
+    CHECK(differing(t0, t1) == 0);
+    CHECK(differing(p0, p1) == 0);
+  }
+}
+
+TEST_CASE("a run moved device -> host and host -> device mid-way keeps its bits", "[gpu][sparse]") {
+  const auto lf = leap_frog_coefficients();
+  const HostEnsemble whole = host_run(false, lf, 0.05, 60);
+  const Start s = start(test_network().rows);
+  // Device for 30 steps, then the host from the device's state (a GPU checkpoint resumed on
+  // the CPU).
+  cuda::SparseEnsemble e(test_network(), static_cast<int>(k_replicas),
+                         cuda::DevicePrecision::float64);
+  e.set_coupling(s.K);
+  e.set_state(s.theta, s.p);
+  e.advance(lf, 0.05, 30);
+  std::vector<double> theta, p;
+  e.get_state(theta, p);
+  HostEnsemble host(test_network(), static_cast<int>(k_replicas), false);
+  host.K = s.K;
+  host.set_state(theta, p);
+  host.advance(lf, 0.05, 30);
+  CHECK(differing(host.theta, whole.theta) == 0);
+  CHECK(differing(host.p, whole.p) == 0);
+  // The host for 30 steps, then the device (a CPU checkpoint resumed on the GPU).
+  const HostEnsemble first = host_run(false, lf, 0.05, 30);
+  e.set_state(first.theta, first.p);
+  e.advance(lf, 0.05, 30);
+  e.get_state(theta, p);
+  CHECK(differing(theta, whole.theta) == 0);
+  CHECK(differing(p, whole.p) == 0);
+}
+
+TEST_CASE("the energy error falls as h^2 (leap-frog) and h^4 (yoshida4); float32 against float64",
+          "[gpu][sparse]") {
+  // Halving h divides a p-th order method's error by 2^p once h is in the asymptotic range.
+  // Measured with the host stepper (the same arithmetic): leap-frog 3.763e-7 -> 9.408e-8 (order
+  // 2.00), yoshida4 1.115e-10 -> 6.968e-12 (4.00) at h = 0.04 -> 0.02; the bands (+-0.3) are
+  // for a device that would step differently, not for noise (the device has the host's bits).
+  const double lf_coarse =
+      energy_error(cuda::DevicePrecision::float64, leap_frog_coefficients(), 0.04);
+  const double lf_fine =
+      energy_error(cuda::DevicePrecision::float64, leap_frog_coefficients(), 0.02);
+  const double y_coarse =
+      energy_error(cuda::DevicePrecision::float64, yoshida4_coefficients(), 0.04);
+  const double y_fine = energy_error(cuda::DevicePrecision::float64, yoshida4_coefficients(), 0.02);
+  const double lf_order = std::log2(lf_coarse / lf_fine);
+  const double y_order = std::log2(y_coarse / y_fine);
+  INFO("leap-frog " << lf_coarse << " -> " << lf_fine << " (order " << lf_order << "); yoshida4 "
+                    << y_coarse << " -> " << y_fine << " (order " << y_order << ")");
+  CHECK(std::abs(lf_order - 2.0) < 0.3);
+  CHECK(std::abs(y_order - 4.0) < 0.3);
+  // float32 rounds each gathered [cos, sin] to float (relative 6e-8), far below the splitting's
+  // error at h = 0.02: the host measured 9.394e-8 against float64's 9.408e-8 (0.15% apart).
+  const double f32 = energy_error(cuda::DevicePrecision::float32, leap_frog_coefficients(), 0.02);
+  INFO("float32 leap-frog h = 0.02: " << f32 << ", float64 " << lf_fine);
+  CHECK(std::abs(f32 - lf_fine) < 0.01 * lf_fine);
+}
+
+TEST_CASE("device memory is checked before anything is allocated", "[gpu][sparse]") {
+  // N = 2 10^9 rows do not fit (int32 columns alone: 8 10^11 bytes at degree 100).
+  try {
+    cuda::SparseEnsemble::directed_er(2000000000, 100.0, 1, 1, cuda::DevicePrecision::float64);
+    FAIL("no refusal");
+  } catch (const cuda::DeviceError& e) {
+    const std::string what = e.what();
+    INFO(what);
+    CHECK(what.find("bytes of device memory") != std::string::npos);
+    CHECK(what.find("are free") != std::string::npos);
+  }
+}
+
+TEST_CASE("the directed ER generator draws G(N, p): its entry count", "[gpu][sparse]") {
+  cuda::SparseEnsemble e =
+      cuda::SparseEnsemble::directed_er(100000, 50.0, 3, 1, cuda::DevicePrecision::float64);
+  // Binomial(N^2, p): mean 5 10^6, sd ~2236; 6 sd.
+  CHECK(std::abs(static_cast<double>(e.entries()) - 5e6) < 6.0 * 2236.0);
+}
