@@ -42,37 +42,49 @@ __device__ std::uint64_t scramble(std::uint64_t z) {
   return z ^ (z >> 31);
 }
 
-// Groups of `words` neighbouring threads gather `per_thread` records at scrambled indices, each
-// thread one 16-byte word of the record: the sparse force's access, whose B replica lanes are B
-// neighbouring threads reading one record of the [cos, sin] table.
-__global__ void gather_kernel(const double2* table, std::int64_t records, int words, int per_thread,
-                              double* out) {
+// Random record indices, drawn once outside the timing (the step reads its columns too).
+__global__ void index_kernel(std::uint32_t* index, std::int64_t count, std::int64_t records) {
+  const std::int64_t i = static_cast<std::int64_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (i >= count) return;
+  index[i] = static_cast<std::uint32_t>(scramble(static_cast<std::uint64_t>(i)) %
+                                        static_cast<std::uint64_t>(records));
+}
+
+// Groups of `words` neighbouring threads gather `per_thread` records whose indices they read
+// from `index` (consecutive groups, consecutive indices: as the step reads its sorted columns),
+// each thread one 16-byte word of the record: the sparse force's access, whose B replica lanes
+// are B neighbouring threads reading one record of the [cos, sin] table.
+__global__ void gather_kernel(const double2* table, const std::uint32_t* index, std::int64_t mask,
+                              int words, int per_thread, double* out) {
   const std::uint64_t t = static_cast<std::uint64_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  const std::uint64_t groups = static_cast<std::uint64_t>(gridDim.x) * blockDim.x /
+                               static_cast<std::uint64_t>(words);
   const std::uint64_t group = t / static_cast<std::uint64_t>(words);
   const std::uint64_t word = t % static_cast<std::uint64_t>(words);
   double sum = 0.0;
   for (int i = 0; i < per_thread; ++i) {
     const std::uint64_t r =
-        scramble(group * 64 + static_cast<std::uint64_t>(i)) % static_cast<std::uint64_t>(records);
+        index[(static_cast<std::uint64_t>(i) * groups + group) & static_cast<std::uint64_t>(mask)];
     const double2 v = table[r * static_cast<std::uint64_t>(words) + word];
     sum += v.x + v.y;
   }
   out[t] = sum;
 }
 
-__global__ void empty_kernel() {}
-
-// 8-byte records: a table of doubles.
-__global__ void gather8_kernel(const double* table, std::int64_t records, int per_thread,
-                               double* out) {
+// 8-byte records: a table of doubles, one thread a record.
+__global__ void gather8_kernel(const double* table, const std::uint32_t* index, std::int64_t mask,
+                               int per_thread, double* out) {
   const std::uint64_t t = static_cast<std::uint64_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  const std::uint64_t threads = static_cast<std::uint64_t>(gridDim.x) * blockDim.x;
   double sum = 0.0;
   for (int i = 0; i < per_thread; ++i) {
-    sum += table[scramble(t * 64 + static_cast<std::uint64_t>(i)) %
-                 static_cast<std::uint64_t>(records)];
+    sum += table[index[(static_cast<std::uint64_t>(i) * threads + t) & static_cast<std::uint64_t>(mask)]];
   }
   out[t] = sum;
 }
+
+__global__ void empty_kernel() {}
+
 
 __global__ void sincos_rate_kernel(int per_thread, double* out) {
   const std::uint64_t t = static_cast<std::uint64_t>(blockIdx.x) * blockDim.x + threadIdx.x;
@@ -111,6 +123,9 @@ double gather_rate(std::int64_t records, int record_bytes) {
   if (record_bytes != 8 && (record_bytes % 16 != 0 || record_bytes > 128)) {
     throw DeviceError("gather_rate: records of 8 or a multiple of 16 bytes up to 128");
   }
+  if (records < 1 || records > INT64_C(0xffffffff)) {
+    throw DeviceError("gather_rate: 1 to 2^32 - 1 records (32-bit indices)");
+  }
   const auto table_bytes =
       static_cast<std::size_t>(records) * static_cast<std::size_t>(record_bytes);
   DeviceBuffer<double> table((table_bytes + 7) / 8);
@@ -120,12 +135,19 @@ double gather_rate(std::int64_t records, int record_bytes) {
   const auto blocks = static_cast<unsigned>(multiprocessors() * 64);
   const auto threads = static_cast<std::size_t>(blocks) * k_threads;
   DeviceBuffer<double> out(threads);
+  // 2^24 indices (64 MB), read cyclically.
+  constexpr std::int64_t k_indices = std::int64_t{1} << 24;
+  DeviceBuffer<std::uint32_t> index(static_cast<std::size_t>(k_indices));
+  index_kernel<<<blocks_for(static_cast<std::size_t>(k_indices), 256), 256>>>(index.data(), k_indices, records);
+  check_launch("index kernel");
   const double s = best_seconds([&] {
     if (record_bytes == 8) {
-      gather8_kernel<<<blocks, k_threads>>>(table.data(), records, k_per_thread, out.data());
+      gather8_kernel<<<blocks, k_threads>>>(table.data(), index.data(), k_indices - 1, k_per_thread,
+                                            out.data());
     } else {
-      gather_kernel<<<blocks, k_threads>>>(reinterpret_cast<const double2*>(table.data()), records,
-                                           record_bytes / 16, k_per_thread, out.data());
+      gather_kernel<<<blocks, k_threads>>>(reinterpret_cast<const double2*>(table.data()),
+                                           index.data(), k_indices - 1, record_bytes / 16,
+                                           k_per_thread, out.data());
     }
     check_launch("gather kernel");
   });

@@ -10,7 +10,8 @@ namespace hmfnet::cuda {
 double copy_bandwidth(std::size_t bytes);
 
 /// Random gathers of `record_bytes`-byte records (8, or a multiple of 16 up to 128) from a table
-/// of `records` records, each record read by neighbouring threads one 16-byte word each, summed
+/// of `records` records (< 2^32), at indices read from a precomputed random array as the step
+/// reads its columns, each record read by neighbouring threads one 16-byte word each, summed
 /// so that none is optimised away: records gathered per second. The access of the sparse
 /// force's [cos, sin] table (one record of 2 B sizeof(T) per stored entry, its B lanes read by B
 /// neighbouring threads).
