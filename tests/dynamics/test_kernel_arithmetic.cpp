@@ -3,7 +3,10 @@
 // scalar sincos against the vectorised one (random angles, the doubles nearest multiples of pi/2,
 // angles beyond the reduced range and non-finite ones), and leap-frog steps of the real
 // NetworkForce and LeapFrog against the same steps composed by hand from the per-element
-// functions (sincos, row sums, g, the observable terms, kick, drift).
+// functions (sincos, row sums, g, the observable terms, kick, drift). And the host stepper that
+// the gpu tests compare the device with (tests/gpu/host_ensemble.hpp) against the CPU's
+// splittings over NetworkForce and RankOneForce, so that "the device gives the CPU's bits" is
+// a chain of tests: device = host stepper (gpu label), host stepper = CPU (here).
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cfloat>
@@ -21,9 +24,14 @@
 #include "dynamics/kernel_arithmetic.hpp"
 #include "dynamics/network_force.hpp"
 #include "dynamics/ordered_sum.hpp"
+#include "dynamics/rank_one_force.hpp"
 #include "dynamics/sincos.hpp"
+#include "dynamics/splitting_coefficients.hpp"
+#include "gpu/host_ensemble.hpp"
+#include "network/complete_graph.hpp"
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
+#include "parallel/parallel_session.hpp"
 #include "support/sincos_hard_cases.hpp"
 #include "support/small_networks.hpp"
 
@@ -277,4 +285,76 @@ TEST_CASE(
       }
     }
   }
+}
+
+namespace {
+
+// The rows of a one-rank network as the host stepper's CSR (0/1 entries).
+cuda::HostCsr host_csr(const DistributedNetwork& network) {
+  const auto& a = network.local_adjacency();
+  cuda::HostCsr csr;
+  csr.rows = network.local_size();
+  csr.offsets.assign(a.row_ptr.begin(), a.row_ptr.end());
+  for (const NodeIndex c : a.cols) csr.columns.push_back(static_cast<std::int32_t>(c));
+  return csr;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "the gpu tests' host stepper equals the CPU's splittings over NetworkForce and RankOneForce "
+    "bit for bit [ER N=300, K_N N=5000]",
+    "[kernel_arithmetic]") {
+  if (ParallelSession::ranks() > 1) {
+    SUCCEED(
+        "one rank only: the host stepper holds the whole network (rank independence of the "
+        "CPU step is tested by the mpi label)");
+    return;
+  }
+  const Network net = step_network(false);
+  const DistributedNetwork network(net);
+  const std::vector<std::pair<KickDriftSplitting, SplittingCoefficients>> methods = {
+      {KickDriftSplitting("leapfrog", 2, leap_frog_coefficients().kicks,
+                          leap_frog_coefficients().drifts),
+       leap_frog_coefficients()},
+      {yoshida4(), yoshida4_coefficients()},
+      {blanes_moan4(), blanes_moan4_coefficients()}};
+  std::vector<InitialCondition> ic;
+  std::vector<double> K;
+  for (int b = 0; b < 3; ++b) {
+    ic.push_back({0.0, 0.6, static_cast<std::uint64_t>(b + 11), MomentumDistribution::waterbag});
+    K.push_back(1.0 + 2.5 * b);  // a K per replica (--K-across-replicas)
+  }
+  for (const ForcePrecision precision : {ForcePrecision::float64, ForcePrecision::float32}) {
+    for (const auto& [method, table] : methods) {
+      RotorState cpu = initial_state(network.first_row(), network.local_size(), ic);
+      gpu_test::HostEnsemble host(host_csr(network), 3, precision == ForcePrecision::float32);
+      host.K = K;
+      host.set_state(cpu.theta, cpu.p);
+      NetworkForce force(network, precision);
+      ForceEvaluation f(force);
+      f.update(cpu);
+      for (int step = 0; step < 25; ++step) method.step(cpu, 0.05, K, f);
+      host.advance(table, 0.05, 25);
+      INFO(to_string(precision) << ", " << method.name());
+      CHECK(bit_difference(host.theta, cpu.theta).count == 0);
+      CHECK(bit_difference(host.p, cpu.p).count == 0);
+    }
+  }
+  // K_N with self-loops: RankOneForce's Z in 2048-row blocks (N = 5000: three blocks).
+  const CompleteGraph graph = CompleteGraph::make(5000, true);
+  const DistributedNetwork complete(graph);
+  RankOneForce rank_one(complete_graph_structure(graph), complete.first_row(),
+                        complete.local_size());
+  ForceEvaluation f(rank_one);
+  RotorState cpu = initial_state(complete.first_row(), complete.local_size(), ic);
+  f.update(cpu);
+  auto host = gpu_test::HostEnsemble::complete(5000, 3);
+  host.K = K;
+  host.set_state(cpu.theta, cpu.p);
+  const LeapFrog leapfrog;
+  for (int step = 0; step < 25; ++step) leapfrog.step(cpu, 0.1, K, f);
+  host.advance(leap_frog_coefficients(), 0.1, 25);
+  CHECK(bit_difference(host.theta, cpu.theta).count == 0);
+  CHECK(bit_difference(host.p, cpu.p).count == 0);
 }
