@@ -50,32 +50,39 @@ def convert(raw, out, commit):
     meta = json.load(open(os.path.join(raw, "qss_gpu.json")))
     blob = np.fromfile(os.path.join(raw, "qss_gpu.f64"), dtype="<f8")
     B, records = meta["replicas"], meta["records"]
+    expected = 2 * B * records * len(meta["sizes"])
+    if blob.size != expected:
+        raise SystemExit(f"{raw}/qss_gpu.f64 holds {blob.size} doubles, its JSON describes {expected}")
     tmp = tempfile.NamedTemporaryFile(dir=os.path.dirname(os.path.abspath(out)), suffix=".h5",
                                       delete=False).name
-    with h5py.File(tmp, "w") as f:
-        for key in ("device", "h", "U", "K", "replicas", "lives", "budget_s", "wall_s", "seeds"):
-            f.attrs[key] = meta[key]
-        f.attrs["git_commit"] = commit
-        f.attrs["program"] = "verification/gpu/qss_lifetime_gpu.cpp via ci/device_check.sh"
-        at = 0
-        for s in meta["sizes"]:
-            R = blob[at:at + B * records].reshape(B, records)
-            E = blob[at + B * records:at + 2 * B * records].reshape(B, records)
-            at += 2 * B * records
-            w = s["records_written"]
-            g = f.create_group(f"N{s['N']}")
-            # float32 keeps R to 1e-7, far below its replica noise (~1e-2); the energy as its
-            # first record (float64) and the relative change since (float32).
-            g.create_dataset("R_mean", data=R[:, :w].astype("<f4"), compression="gzip", shuffle=True)
-            g.create_dataset("energy_first", data=E[:, 0])
-            drift = (E[:, :w] - E[:, :1]) / np.abs(E[:, :1])
-            g.create_dataset("energy_drift", data=drift.astype("<f4"), compression="gzip", shuffle=True)
-            for key in ("N", "record_every", "steps_planned", "steps_done", "records_written"):
-                g.attrs[key] = s[key]
-        if at != blob.size:
-            raise SystemExit(f"qss_gpu.f64 holds {blob.size} doubles, the JSON describes {at}")
-    os.chmod(tmp, 0o644)
-    os.replace(tmp, out)
+    try:
+        with h5py.File(tmp, "w") as f:
+            for key in ("device", "h", "U", "K", "replicas", "lives", "budget_s", "wall_s", "seeds"):
+                f.attrs[key] = meta[key]
+            f.attrs["git_commit"] = commit
+            f.attrs["program"] = "verification/gpu/qss_lifetime_gpu.cpp via ci/device_check.sh"
+            at = 0
+            for s in meta["sizes"]:
+                R = blob[at:at + B * records].reshape(B, records)
+                E = blob[at + B * records:at + 2 * B * records].reshape(B, records)
+                at += 2 * B * records
+                w = s["records_written"]
+                g = f.create_group(f"N{s['N']}")
+                # float32 keeps R to 1e-7, far below its replica noise (~1e-2); the energy as its
+                # first record (float64) and the relative change since (float32).
+                g.create_dataset("R_mean", data=R[:, :w].astype("<f4"), compression="gzip",
+                                 shuffle=True)
+                g.create_dataset("energy_first", data=E[:, 0])
+                drift = (E[:, :w] - E[:, :1]) / np.abs(E[:, :1])
+                g.create_dataset("energy_drift", data=drift.astype("<f4"), compression="gzip",
+                                 shuffle=True)
+                for key in ("N", "record_every", "steps_planned", "steps_done", "records_written"):
+                    g.attrs[key] = s[key]
+        os.chmod(tmp, 0o644)
+        os.replace(tmp, out)
+    finally:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
 
 
 def half_way(x, dt, width, target):

@@ -1,0 +1,101 @@
+#!/usr/bin/env python3
+"""paper/scripts/qss_lifetime_gpu.py against what it ports (CTest unit.qss_lifetime_gpu_script):
+  - m_eq against the M_eq that verification_qss_lifetime computed in C++ (all_to_all.cpp) at its
+    own U, stored in paper/full/beyond/data/qss_lifetime.h5, to 1e-9;
+  - half_way against a line-by-line transcription of support/passage_time.hpp's loop, on random
+    series rising and falling, and NaN where the series never passes;
+  - power_law on an exact power law;
+  - the conversion of the device check's output: datasets, attributes, the records kept, and a
+    refusal when the binary does not match its JSON.
+Usage: test_qss_lifetime_gpu.py PAPER_DIR
+"""
+import json
+import math
+import os
+import sys
+import tempfile
+
+import h5py
+import numpy as np
+
+
+def passage_time_hpp(x, dt, width, target):
+    """support/passage_time.hpp's half_way_passage, t0 = 0, as written there."""
+    if len(x) <= width or width == 0:
+        return math.nan
+    start = sum(x[:width]) / width
+    half = 0.5 * (start + target)
+    sign = 1.0 if target >= start else -1.0
+    window = start * width
+    for i in range(width, len(x)):
+        window += x[i] - x[i - width]
+        if sign * (window / width - half) >= 0.0:
+            return dt * (i + 1.0 - 0.5 * width)
+    return math.nan
+
+
+def main():
+    paper = sys.argv[1]
+    sys.path.insert(0, os.path.join(paper, "scripts"))
+    import qss_lifetime_gpu as q
+
+    with h5py.File(os.path.join(paper, "full", "beyond", "data", "qss_lifetime.h5"), "r") as f:
+        d = f["data/lives"]
+        cols = json.loads(d.attrs["columns"])
+        for row in d[()]:
+            U, M = row[cols.index("U")], row[cols.index("M_eq")]
+            assert abs(q.m_eq(U) - M) < 1e-9, (U, q.m_eq(U), M)
+
+    rng = np.random.default_rng(3)
+    for trial in range(200):
+        n = int(rng.integers(5, 300))
+        width = int(rng.integers(1, 12))
+        rising = trial % 2 == 0
+        x = np.cumsum(rng.normal(0.01 if rising else -0.01, 0.05, n))
+        target = float(rng.normal(1.0 if rising else -1.0, 0.5))
+        a = q.half_way(x, 2.5, width, target)
+        b = passage_time_hpp(list(x), 2.5, width, target)
+        assert (math.isnan(a) and math.isnan(b)) or abs(a - b) < 1e-9, (trial, a, b)
+    assert math.isnan(q.half_way(np.zeros(50), 1.0, 5, 1.0))
+
+    ns = np.array([1e3, 2e3, 5e3, 1e4])
+    slope, se, _ = q.power_law(ns, 3.0 * ns ** 1.7, 0.05 * ns ** 1.7)
+    assert abs(slope - 1.7) < 1e-12 and se > 0
+
+    with tempfile.TemporaryDirectory() as tmp:
+        B, records = 2, 5
+        sizes = [{"N": 1000, "record_every": 10, "steps_planned": 50, "steps_done": 50,
+                  "records_written": 5},
+                 {"N": 2000, "record_every": 20, "steps_planned": 100, "steps_done": 60,
+                  "records_written": 3}]
+        meta = {"device": "test", "h": 0.1, "U": 0.69, "K": 1, "replicas": B, "lives": 3,
+                "budget_s": 1, "wall_s": 1, "records": records, "seeds": "s", "sizes": sizes}
+        json.dump(meta, open(os.path.join(tmp, "qss_gpu.json"), "w"))
+        blob = []
+        for s in sizes:
+            R = np.arange(B * records, dtype=float).reshape(B, records) / 100 + s["N"]
+            E = -np.full((B, records), 0.5 * s["N"]) * (1 + 1e-6 * np.arange(records))
+            blob += [R.ravel(), E.ravel()]
+        np.concatenate(blob).astype("<f8").tofile(os.path.join(tmp, "qss_gpu.f64"))
+        out = os.path.join(tmp, "q.h5")
+        q.convert(tmp, out, "abc")
+        with h5py.File(out, "r") as f:
+            assert f.attrs["git_commit"] == "abc" and f.attrs["replicas"] == B
+            assert f["N2000/R_mean"].shape == (B, 3)
+            assert abs(f["N1000/R_mean"][1, 2] - (1000 + 7 / 100)) < 1e-3
+            assert abs(f["N2000/energy_drift"][0, 2] + 2e-6) < 1e-9
+            assert f["N2000"].attrs["steps_done"] == 60
+        np.zeros(3).tofile(os.path.join(tmp, "qss_gpu.f64"))
+        try:
+            q.convert(tmp, os.path.join(tmp, "bad.h5"), "abc")
+        except (SystemExit, ValueError):
+            pass
+        else:
+            raise AssertionError("a binary that does not match its JSON was accepted")
+        assert not os.path.exists(os.path.join(tmp, "bad.h5"))
+        assert sorted(os.listdir(tmp)) == ["q.h5", "qss_gpu.f64", "qss_gpu.json"], os.listdir(tmp)
+    print("qss_lifetime_gpu.py: m_eq, half_way, power_law and convert as ported")
+
+
+if __name__ == "__main__":
+    main()
