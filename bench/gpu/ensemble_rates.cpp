@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "dynamics/cuda/complete_graph_ensembles.hpp"
+#include "dynamics/cuda/device.hpp"
 #include "dynamics/cuda/device_bounds.hpp"
 #include "dynamics/cuda/sparse_ensemble.hpp"
 

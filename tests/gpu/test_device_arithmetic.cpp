@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/cuda/device.hpp"
 #include "dynamics/cuda/device_arithmetic_check.hpp"
 #include "dynamics/kernel_arithmetic.hpp"
 
@@ -125,7 +126,7 @@ TEST_CASE("device sincos, kick and drift equal the host's bit for bit [10^5 angl
 
 int main(int argc, char* argv[]) {
   std::string why;
-  if (!cuda::device_available(why)) {
+  if (!cuda::device_usable(why)) {
     std::cout << "hmfnet_gpu_tests: skipped: " << why << '\n';
     return k_skipped;
   }

@@ -28,6 +28,7 @@
 
 #include "core/random.hpp"
 #include "dynamics/cuda/complete_graph_ensembles.hpp"
+#include "dynamics/cuda/device.hpp"
 
 using namespace hmfnet;
 

@@ -69,6 +69,17 @@ __device__ void tree_sum(double* sums_c, double* sums_s, int tiles) {
   }
 }
 
+// Rotor m's new angle: its [cos, sin] stored for the next evaluation and added to the tile's Z.
+__device__ __forceinline__ void store_phase(double theta, std::int64_t m, double* __restrict__ cs,
+                                            double& zc, double& zs) {
+  double c = 0.0, s = 0.0;
+  sincos_one(theta, c, s);
+  cs[2 * m] = c;
+  cs[2 * m + 1] = s;
+  zc += c;
+  zs += s;
+}
+
 __global__ void complete_graph_kernel(Arrays a, Table table, bool evaluate_only) {
   extern __shared__ double shared[];
   const SystemInfo sys = a.systems[a.block_system[blockIdx.x]];
@@ -87,14 +98,7 @@ __global__ void complete_graph_kernel(Arrays a, Table table, bool evaluate_only)
   if (evaluate_only) {
     for (int t = static_cast<int>(threadIdx.x); t < tiles; t += static_cast<int>(blockDim.x)) {
       double zc = 0.0, zs = 0.0;
-      for (std::int64_t m = t; m < n; m += tiles) {
-        double c = 0.0, s = 0.0;
-        sincos_one(theta[m], c, s);
-        cs[2 * m] = c;
-        cs[2 * m + 1] = s;
-        zc += c;
-        zs += s;
-      }
+      for (std::int64_t m = t; m < n; m += tiles) store_phase(theta[m], m, cs, zc, zs);
       sums_c[t] = zc;
       sums_s[t] = zs;
     }
@@ -124,12 +128,7 @@ __global__ void complete_graph_kernel(Arrays a, Table table, bool evaluate_only)
           const double th = drifted_angle(theta[m], table.drift[i], pm);
           p[m] = pm;
           theta[m] = th;
-          double c = 0.0, s = 0.0;
-          sincos_one(th, c, s);
-          cs[2 * m] = c;
-          cs[2 * m + 1] = s;
-          zc += c;
-          zs += s;
+          store_phase(th, m, cs, zc, zs);
         }
         sums_c[t] = zc;
         sums_s[t] = zs;

@@ -6,16 +6,13 @@
 #include <cstddef>
 #include <string>
 
+#include "dynamics/cuda/device.hpp"
 #include "dynamics/cuda/device_arithmetic_check.hpp"
 #include "dynamics/kernel_arithmetic.hpp"
 
 namespace hmfnet::cuda {
 
 namespace {
-
-// The compute capability this build has code for: sm_90 and PTX for 9.0, which the driver
-// compiles for a newer card (CMAKE_CUDA_ARCHITECTURES in cmake/HmfnetCuda.cmake).
-constexpr int k_minimum_major = 9;
 
 // One thread per element.
 __global__ void arithmetic_kernel(const double* theta, const double* p, const double* g,
@@ -70,25 +67,6 @@ bool to_host(std::vector<double>& host, const DeviceArray& device, std::size_t n
 
 }  // namespace
 
-bool device_available(std::string& why) {
-  int count = 0;
-  const cudaError_t status = cudaGetDeviceCount(&count);
-  if (status != cudaSuccess || count == 0) {
-    why = std::string("no CUDA device: ") +
-          (status != cudaSuccess ? cudaGetErrorString(status) : "none found");
-    return false;
-  }
-  cudaDeviceProp properties{};
-  if (failed(cudaGetDeviceProperties(&properties, 0), "cudaGetDeviceProperties", why)) return false;
-  if (properties.major < k_minimum_major) {
-    why = std::string("CUDA device ") + properties.name + " (compute capability " +
-          std::to_string(properties.major) + "." + std::to_string(properties.minor) +
-          ") has no code in this build (built for 9.0 and newer)";
-    return false;
-  }
-  return true;
-}
-
 bool run_arithmetic_check(const ArithmeticCheckInput& in, ArithmeticCheckOutput& out,
                           std::string& message) {
   const std::size_t n = in.theta.size();
@@ -96,7 +74,7 @@ bool run_arithmetic_check(const ArithmeticCheckInput& in, ArithmeticCheckOutput&
     message = "arithmetic check: theta, p and g must have one length";
     return false;
   }
-  if (!device_available(message)) return false;
+  if (!device_usable(message)) return false;
   DeviceArray theta, p, g, cs, p_out, theta_out;
   if (!to_device(theta, in.theta, message) || !to_device(p, in.p, message) ||
       !to_device(g, in.g, message) || failed(cs.allocate(2 * n), "cudaMalloc", message) ||

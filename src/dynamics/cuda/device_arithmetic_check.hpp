@@ -28,11 +28,6 @@ struct ArithmeticCheckOutput {
   std::vector<double> theta;
 };
 
-/// Whether a CUDA device can run this build's code; if not, `why` says why in one line (for
-/// example no device, or a driver older than the runtime, as cudaGetDeviceCount reports it on a
-/// machine without a GPU).
-bool device_available(std::string& why);
-
 /// Runs the check on device 0: true with `out` filled, or false with `message` naming the CUDA
 /// error (no device included). Lengths that differ are refused the same way.
 bool run_arithmetic_check(const ArithmeticCheckInput& in, ArithmeticCheckOutput& out,

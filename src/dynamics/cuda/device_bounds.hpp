@@ -2,6 +2,7 @@
 // What the device can do at most, measured on it: the rates a step's cost is bounded by
 // (bench/gpu/ensemble_rates.cpp divides each configuration's rate by them). Each is the best of
 // several timed repetitions after a warm-up, with device events.
+#include <cstddef>
 #include <cstdint>
 
 namespace hmfnet::cuda {

@@ -7,7 +7,7 @@
 #include <string>
 #include <utility>
 
-#include "dynamics/cuda/sparse_ensemble.hpp"
+#include "dynamics/cuda/device.hpp"
 
 namespace hmfnet::cuda {
 

@@ -8,20 +8,13 @@
 // A plain C++ interface: no CUDA header reaches the caller (cmake/HmfnetCuda.cmake).
 #include <cstdint>
 #include <memory>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "dynamics/cuda/device.hpp"
 #include "dynamics/splitting_coefficients.hpp"
 
 namespace hmfnet::cuda {
-
-/// A CUDA call that failed, a device that cannot run this build, or device memory that does not
-/// suffice: one line naming it.
-class DeviceError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 /// The gathered [cos, sin] table and the row sums in double or in float (ForcePrecision).
 enum class DevicePrecision { float64, float32 };
@@ -96,11 +89,5 @@ class SparseEnsemble {
   explicit SparseEnsemble(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> m_impl;
 };
-
-/// Whether a CUDA device can run this build's code; if not, `why` says why in one line.
-bool device_usable(std::string& why);
-
-/// The device's name, memory and multiprocessor count, in one line.
-std::string device_description();
 
 }  // namespace hmfnet::cuda
