@@ -233,42 +233,9 @@ void segmented_rows_kernel(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, 
 #pragma omp barrier
 }
 
-#if defined(__x86_64__)
-// The segmented kernels of B = 2, 4 and 8 for AVX-512, as rows_kernel_avx512 below: the same
-// additions in the same order, the baseline's bits.
-template <typename T, int B, bool Weighted>
-__attribute__((target("avx512f,avx512dq"), flatten)) void segmented_rows_kernel_avx512(
-    const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, NodeIndex rows) {
-  segmented_rows_kernel<T, B, Weighted>(a, sa, rows, B);
-}
-
-// True when the AVX-512 kernel of this B ran.
-template <typename T, bool Weighted>
-bool dispatch_segmented_avx512(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, NodeIndex rows,
-                               int b) {
-  if (sincos_isa() != SincosIsa::avx512) return false;
-  switch (b) {
-    case 2:
-      segmented_rows_kernel_avx512<T, 2, Weighted>(a, sa, rows);
-      return true;
-    case 4:
-      segmented_rows_kernel_avx512<T, 4, Weighted>(a, sa, rows);
-      return true;
-    case 8:
-      segmented_rows_kernel_avx512<T, 8, Weighted>(a, sa, rows);
-      return true;
-    default:
-      return false;
-  }
-}
-#endif
-
 template <typename T, bool Weighted>
 void dispatch_segmented(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, NodeIndex rows,
                         int b) {
-#if defined(__x86_64__)
-  if (dispatch_segmented_avx512<T, Weighted>(a, sa, rows, b)) return;
-#endif
   switch (b) {
     case 1:
       segmented_rows_kernel<T, 1, Weighted>(a, sa, rows, b);
@@ -288,45 +255,8 @@ void dispatch_segmented(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, Nod
   }
 }
 
-#if defined(__x86_64__)
-// The replica kernels of B = 2, 4 and 8 compiled for AVX-512 where the CPU has it (the vector
-// set that sincos_isa() chose, so HMFNET_SINCOS_ISA limits both): 32 vector registers hold all
-// four partials (C = 4) up to 8 float64 replicas, and one 64-byte load brings 4 of a record's
-// [cos, sin] pairs. Each lane still adds in rows_kernel's order, and the row's combination and g
-// are the same IEEE operations (this file is compiled with -ffp-contract=off, so the target's
-// multiply-add is never formed): the baseline's bits (tests/dynamics/test_kernel_arithmetic.cpp
-// composes them by hand, test_network_force.cpp compares replicas with single runs).
-template <typename T, int B, bool Weighted>
-__attribute__((target("avx512f,avx512dq"), flatten)) void rows_kernel_avx512(
-    const RowKernelArgs<T>& a, NodeIndex rows) {
-  rows_kernel<T, B, 4, Weighted>(a, rows, B);
-}
-
-// True when the AVX-512 kernel of this B ran.
-template <typename T, bool Weighted>
-bool dispatch_avx512(const RowKernelArgs<T>& a, NodeIndex rows, int b) {
-  if (sincos_isa() != SincosIsa::avx512) return false;
-  switch (b) {
-    case 2:
-      rows_kernel_avx512<T, 2, Weighted>(a, rows);
-      return true;
-    case 4:
-      rows_kernel_avx512<T, 4, Weighted>(a, rows);
-      return true;
-    case 8:
-      rows_kernel_avx512<T, 8, Weighted>(a, rows);
-      return true;
-    default:
-      return false;
-  }
-}
-#endif
-
 template <typename T, bool Weighted>
 void dispatch(const RowKernelArgs<T>& a, NodeIndex rows, int b) {
-#if defined(__x86_64__)
-  if (dispatch_avx512<T, Weighted>(a, rows, b)) return;
-#endif
   switch (b) {
     case 1:
       rows_kernel_single<T, Weighted>(a, rows);
