@@ -6,6 +6,8 @@
 # Prints per row the median rate of each binary (G stored entries x replicas x steps/s), the
 # median of the per-round ratios NEW / OLD, N = 10^6 as a share of N = 10^4, and peak RSS.
 # Usage: bench/segmented_rows_table.sh OLD_BUILD_DIR NEW_BUILD_DIR [ROUNDS (3)] [MIN_TIME (1)]
+# OLD_ENV and NEW_ENV (environment, default empty): assignments each side runs with, e.g. one
+# build against itself with OLD_ENV=HMFNET_SINCOS_ISA=avx2 (the vector kernels below AVX-512).
 set -euo pipefail
 old=$1 new=$2 rounds=${3:-3} min_time=${4:-1}
 out=$(mktemp -d)
@@ -13,9 +15,10 @@ trap 'rm -rf "$out"' EXIT
 for round in $(seq "$rounds"); do
   for n in 10000 1000000; do
     for which in old new; do
-      build=$old
-      [ "$which" = new ] && build=$new
-      /usr/bin/time -f "%M" -o "$out/rss_${which}_${n}_${round}" "$build/bin/hmfnet_bench" \
+      build=$old side_env=${OLD_ENV:-}
+      [ "$which" = new ] && build=$new side_env=${NEW_ENV:-}
+      # shellcheck disable=SC2086  # the assignments are words
+      /usr/bin/time -f "%M" -o "$out/rss_${which}_${n}_${round}" env $side_env "$build/bin/hmfnet_bench" \
         --benchmark_filter="^LeapFrogStep/$n/100/(1|8)/1/(0|1)/" \
         --benchmark_min_time="$min_time" --benchmark_format=json \
         >"$out/${which}_${n}_${round}.json" 2>/dev/null
