@@ -204,9 +204,8 @@ else
   check_prebuilt_gpu_tests
   # The benchmark and the campaign as prepared on the CPU machine, where they were built.
   bin_dir="$prepared/bin"
-  for c in check_bench check_qss; do
-    if [ -x "$bin_dir/hmfnet_gpu_ensemble_rates" ]; then "$c" || record "$c" fail - "exit $?"; fi
-  done
+  if [ -x "$bin_dir/hmfnet_gpu_ensemble_rates" ]; then check_bench || record check_bench fail - "exit $?"; fi
+  if [ -x "$bin_dir/hmfnet_gpu_qss_lifetime" ]; then check_qss || record check_qss fail - "exit $?"; fi
 fi
 
 if [ -f "$OUT/runs.log" ]; then

@@ -109,6 +109,8 @@ class Size:
         self.t = self.dt * np.arange(1, self.R.shape[1] + 1)
         self.T = float(g.attrs["steps_done"]) * h
         self.planned = float(g.attrs["steps_planned"]) * h
+        # The smoothing window in whole records: 50 time units where a record is shorter (N <
+        # 5000 here); beyond, one record, itself a mean over dt > 50 (up to 660 at 2 10^4).
         self.width = max(1, int(round(SMOOTH / self.dt)))
         U = E0 / self.N + 0.5  # K = 1; the centre-of-mass term (P/N)^2/2 ~ 1e-4 left in
         self.U = U.mean()
@@ -164,6 +166,8 @@ def spread(curves, alpha):
 
 
 def collapse(sizes, rng=None):
+    if len(sizes) < 2:
+        return np.nan  # one curve collapses onto itself at every alpha
     curves = []
     for s in sizes:
         chosen = None if rng is None else rng.integers(0, s.R.shape[0], s.R.shape[0])

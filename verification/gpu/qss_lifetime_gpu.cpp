@@ -73,6 +73,10 @@ int main(int argc, char** argv) {
   double lives = 3.0, budget = 200.0;
   std::int64_t chunk = 100000;
   std::string out = ".";
+  if (argc % 2 == 0) {
+    std::fprintf(stderr, "hmfnet_gpu_qss_lifetime: option %s has no value\n", argv[argc - 1]);
+    return 2;
+  }
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i], value = argv[i + 1];
     if (key == "--sizes") {

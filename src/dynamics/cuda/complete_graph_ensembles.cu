@@ -80,7 +80,8 @@ __device__ __forceinline__ void store_phase(double theta, std::int64_t m, double
   zs += s;
 }
 
-__global__ void complete_graph_kernel(Arrays a, Table table, bool evaluate_only) {
+__global__ void __launch_bounds__(1024)
+    complete_graph_kernel(Arrays a, Table table, bool evaluate_only) {
   extern __shared__ double shared[];
   const SystemInfo sys = a.systems[a.block_system[blockIdx.x]];
   const int b = a.block_replica[blockIdx.x];
@@ -212,6 +213,7 @@ CompleteGraphEnsembles::CompleteGraphEnsembles(std::vector<CompleteGraphSystem> 
     throw DeviceError("complete graph ensembles: threads per block " +
                       std::to_string(threads_per_block) + " is not a multiple of 32 in [32, 1024]");
   }
+  if (systems.empty()) throw DeviceError("complete graph ensembles: no system given");
   std::int64_t state = 0, records = 0;
   int blocks = 0;
   std::vector<SystemInfo> info;

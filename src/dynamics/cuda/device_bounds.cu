@@ -13,26 +13,35 @@ namespace {
 
 constexpr int k_repeats = 7;
 
+// A CUDA event, destroyed on every way out.
+class Event {
+ public:
+  Event() { check(cudaEventCreate(&m_event), "cudaEventCreate"); }
+  Event(const Event&) = delete;
+  Event& operator=(const Event&) = delete;
+  ~Event() { cudaEventDestroy(m_event); }
+  cudaEvent_t get() const { return m_event; }
+
+ private:
+  cudaEvent_t m_event = nullptr;
+};
+
 // Seconds of the fastest of k_repeats runs of `run` (one warm-up first).
 template <typename Run>
 double best_seconds(Run&& run) {
-  cudaEvent_t start = nullptr, stop = nullptr;
-  check(cudaEventCreate(&start), "cudaEventCreate");
-  check(cudaEventCreate(&stop), "cudaEventCreate");
+  const Event start, stop;
   run();
   check(cudaDeviceSynchronize(), "warm-up");
   float best = 1e30F;
   for (int i = 0; i < k_repeats; ++i) {
-    check(cudaEventRecord(start), "cudaEventRecord");
+    check(cudaEventRecord(start.get()), "cudaEventRecord");
     run();
-    check(cudaEventRecord(stop), "cudaEventRecord");
-    check(cudaEventSynchronize(stop), "cudaEventSynchronize");
+    check(cudaEventRecord(stop.get()), "cudaEventRecord");
+    check(cudaEventSynchronize(stop.get()), "cudaEventSynchronize");
     float ms = 0.0F;
-    check(cudaEventElapsedTime(&ms, start, stop), "cudaEventElapsedTime");
+    check(cudaEventElapsedTime(&ms, start.get(), stop.get()), "cudaEventElapsedTime");
     best = std::min(best, ms);
   }
-  cudaEventDestroy(start);
-  cudaEventDestroy(stop);
   return static_cast<double>(best) * 1e-3;
 }
 
@@ -57,8 +66,8 @@ __global__ void index_kernel(std::uint32_t* index, std::int64_t count, std::int6
 __global__ void gather_kernel(const double2* table, const std::uint32_t* index, std::int64_t mask,
                               int words, int per_thread, double* out) {
   const std::uint64_t t = static_cast<std::uint64_t>(blockIdx.x) * blockDim.x + threadIdx.x;
-  const std::uint64_t groups = static_cast<std::uint64_t>(gridDim.x) * blockDim.x /
-                               static_cast<std::uint64_t>(words);
+  const std::uint64_t groups =
+      static_cast<std::uint64_t>(gridDim.x) * blockDim.x / static_cast<std::uint64_t>(words);
   const std::uint64_t group = t / static_cast<std::uint64_t>(words);
   const std::uint64_t word = t % static_cast<std::uint64_t>(words);
   double sum = 0.0;
@@ -78,13 +87,13 @@ __global__ void gather8_kernel(const double* table, const std::uint32_t* index, 
   const std::uint64_t threads = static_cast<std::uint64_t>(gridDim.x) * blockDim.x;
   double sum = 0.0;
   for (int i = 0; i < per_thread; ++i) {
-    sum += table[index[(static_cast<std::uint64_t>(i) * threads + t) & static_cast<std::uint64_t>(mask)]];
+    sum += table[index[(static_cast<std::uint64_t>(i) * threads + t) &
+                       static_cast<std::uint64_t>(mask)]];
   }
   out[t] = sum;
 }
 
 __global__ void empty_kernel() {}
-
 
 __global__ void sincos_rate_kernel(int per_thread, double* out) {
   const std::uint64_t t = static_cast<std::uint64_t>(blockIdx.x) * blockDim.x + threadIdx.x;
@@ -138,7 +147,8 @@ double gather_rate(std::int64_t records, int record_bytes) {
   // 2^24 indices (64 MB), read cyclically.
   constexpr std::int64_t k_indices = std::int64_t{1} << 24;
   DeviceBuffer<std::uint32_t> index(static_cast<std::size_t>(k_indices));
-  index_kernel<<<blocks_for(static_cast<std::size_t>(k_indices), 256), 256>>>(index.data(), k_indices, records);
+  index_kernel<<<blocks_for(static_cast<std::size_t>(k_indices), 256), 256>>>(index.data(),
+                                                                              k_indices, records);
   check_launch("index kernel");
   const double s = best_seconds([&] {
     if (record_bytes == 8) {

@@ -24,7 +24,8 @@ constexpr std::int64_t k_sum_block_rows = 2048;
 
 // The [cos, sin] of every cell's angle, in double (the rows' own) and, for float32, narrowed
 // (network_force.cpp: narrow).
-__global__ void sincos_kernel(const double* theta, std::int64_t cells, double* cs, float* cs32) {
+__global__ void __launch_bounds__(1024)
+    sincos_kernel(const double* theta, std::int64_t cells, double* cs, float* cs32) {
   const std::int64_t k = static_cast<std::int64_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (k >= cells) return;
   double c = 0.0, s = 0.0;
@@ -54,7 +55,7 @@ struct StageArgs {
 
 // integrator.cpp's kick (the pending one) then kick_drift, for one cell, then the [cos, sin] of
 // the new angle for the evaluation that follows.
-__global__ void stage_kernel(StageArgs a) {
+__global__ void __launch_bounds__(1024) stage_kernel(StageArgs a) {
   const std::int64_t k = static_cast<std::int64_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (k >= a.cells) return;
   const double K = a.K[k % a.replicas];
@@ -76,8 +77,8 @@ __global__ void stage_kernel(StageArgs a) {
 }
 
 // integrator.cpp's kick alone: the last kick of an advance.
-__global__ void kick_kernel(double* p, const double* g, const double* K, int replicas,
-                            std::int64_t cells, double c) {
+__global__ void __launch_bounds__(1024) kick_kernel(double* p, const double* g, const double* K,
+                                                    int replicas, std::int64_t cells, double c) {
   const std::int64_t k = static_cast<std::int64_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (k >= cells) return;
   p[k] = kicked_momentum(p[k], c, K[k % replicas], g[k]);
@@ -98,7 +99,7 @@ struct ForceArgs {
 
 // g of one cell from its row's sum (network_force.cpp's rows kernels, kernel_arithmetic.hpp).
 template <typename T>
-__global__ void force_kernel(ForceArgs<T> a) {
+__global__ void __launch_bounds__(1024) force_kernel(ForceArgs<T> a) {
   const std::int64_t k = static_cast<std::int64_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (k >= a.cells) return;
   const std::int64_t row = k / a.replicas;
@@ -115,7 +116,8 @@ __global__ void force_kernel(ForceArgs<T> a) {
 }
 
 // Per cell: p^2 / 2 as Run::observe forms it (simulation.cpp).
-__global__ void kinetic_kernel(const double* p, std::int64_t cells, double* out) {
+__global__ void __launch_bounds__(1024)
+    kinetic_kernel(const double* p, std::int64_t cells, double* out) {
   const std::int64_t k = static_cast<std::int64_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (k >= cells) return;
   out[k] = 0.5 * p[k] * p[k];
@@ -145,7 +147,7 @@ __device__ std::uint64_t mix(std::uint64_t z) {
 }
 
 __device__ std::int64_t er_row(std::uint64_t seed, std::int64_t row, std::int64_t n, double log_q,
-                               std::int32_t* out) {
+                               std::int32_t* out, std::int64_t room) {
   std::uint64_t state = mix(seed ^ mix(static_cast<std::uint64_t>(row) + 0x9e3779b97f4a7c15ULL));
   std::int64_t column = -1, count = 0;
   for (;;) {
@@ -156,7 +158,7 @@ __device__ std::int64_t er_row(std::uint64_t seed, std::int64_t row, std::int64_
     if (!(gap < static_cast<double>(n))) break;
     column += 1 + static_cast<std::int64_t>(gap);
     if (column >= n) break;
-    if (out != nullptr) out[count] = static_cast<std::int32_t>(column);
+    if (out != nullptr && count < room) out[count] = static_cast<std::int32_t>(column);
     ++count;
   }
   return count;
@@ -166,14 +168,15 @@ __global__ void er_count_kernel(std::uint64_t seed, std::int64_t n, double log_q
                                 std::int64_t* counts) {
   const std::int64_t row = static_cast<std::int64_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (row > n) return;
-  counts[row] = row < n ? er_row(seed, row, n, log_q, nullptr) : 0;
+  counts[row] = row < n ? er_row(seed, row, n, log_q, nullptr, 0) : 0;
 }
 
 __global__ void er_fill_kernel(std::uint64_t seed, std::int64_t n, double log_q,
                                const std::int64_t* offsets, std::int32_t* columns) {
   const std::int64_t row = static_cast<std::int64_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (row >= n) return;
-  er_row(seed, row, n, log_q, columns + offsets[row]);
+  // The same draw as the count; `room` only guards the row's slice.
+  er_row(seed, row, n, log_q, columns + offsets[row], offsets[row + 1] - offsets[row]);
 }
 
 std::size_t state_bytes(std::int64_t rows, int replicas, DevicePrecision precision) {
@@ -299,6 +302,9 @@ SparseEnsemble::SparseEnsemble(const HostCsr& network, int replicas, DevicePreci
       network.offsets.front() != 0 ||
       network.offsets.back() != static_cast<std::int64_t>(network.columns.size())) {
     throw DeviceError("device ensemble: the CSR offsets do not match the rows and entries");
+  }
+  if (!std::is_sorted(network.offsets.begin(), network.offsets.end())) {
+    throw DeviceError("device ensemble: the CSR offsets decrease");
   }
   for (const std::int32_t c : network.columns) {
     if (c < 0 || c >= network.rows) {
