@@ -65,7 +65,9 @@ for f in "${files[@]}"; do
   fi
 done
 echo "ci/tidy.sh: ${#files[@]} files in $(( $(date +%s) - start )) s on $(nproc) jobs; slowest:"
-sort -rn "$logs"/*.ms | head -5 | awk '{printf "  %6.1f s  %s\n", $1 / 1000, $2}'
+# awk reads the whole list (head would close the pipe early: sort's SIGPIPE fails the script
+# under pipefail, depending on timing).
+sort -rn "$logs"/*.ms | awk 'NR <= 5 {printf "  %6.1f s  %s\n", $1 / 1000, $2}'
 if [ ${#failed[@]} -gt 0 ]; then
   echo "ci/tidy.sh: findings per check:"
   cat "$logs"/*.cpp | grep -E ': (warning|error): ' | sort -u \
