@@ -186,7 +186,23 @@ check_qss() {
   esac
 }
 
-checks=(check_gpu_label check_bench check_qss)
+# shellcheck disable=SC2317  # called through the list checks
+# `hmfnet simulate --device cuda` end to end (ci/device_simulate.py): the CLI built on the CPU
+# machine, packed with its libraries by ci/device_pack_cli.sh, against `--device cpu` here.
+check_simulate() {
+  local log="$OUT/simulate.log" rc=0 t0=$EPOCHREALTIME pack="$prepared/hmfnet-cli.tar.xz"
+  local dir="$build/cli"
+  [ -f "$pack" ] || { record "simulate --device cuda" skip 0 "no $pack (ci/device_prepare.sh)"; return 0; }
+  rm -rf "$dir" && mkdir -p "$dir"
+  tar -xJf "$pack" -C "$dir" || { record "simulate --device cuda" fail "$(elapsed_since "$t0")" "cannot unpack $pack"; return 0; }
+  bounded "$(limit_for 150)" "$log" python3 "$root/ci/device_simulate.py" "$dir" "$build/cli-work" || rc=$?
+  case $rc in
+    0) record "simulate --device cuda" pass "$(elapsed_since "$t0")" "$(tail -n 1 "$log")" ;;
+    *) record "simulate --device cuda" fail "$(elapsed_since "$t0")" "$(exit_text "$rc"): $(tail -n 1 "$log")" ;;
+  esac
+}
+
+checks=(check_gpu_label check_simulate check_bench check_qss)
 
 echo "== device"
 show_device
@@ -202,12 +218,14 @@ else
   echo "== build failed: see $OUT/build.log"
   tail -n 30 "$OUT/build.log" 2>/dev/null || true
   check_prebuilt_gpu_tests
+  check_simulate || record check_simulate fail - "exit $?"
   # The benchmark and the campaign as prepared on the CPU machine, where they were built.
   bin_dir="$prepared/bin"
   if [ -x "$bin_dir/hmfnet_gpu_ensemble_rates" ]; then check_bench || record check_bench fail - "exit $?"; fi
   if [ -x "$bin_dir/hmfnet_gpu_qss_lifetime" ]; then check_qss || record check_qss fail - "exit $?"; fi
 fi
 
+[ -f "$OUT/simulate.log" ] && { echo; grep -E '^(pass|FAIL) ' "$OUT/simulate.log" || true; }
 if [ -f "$OUT/runs.log" ]; then
   echo
   grep -A 20 -E '^kind +prec' "$OUT/runs.log" | grep -v '^==' || true

@@ -6,14 +6,19 @@
 #      there fails;
 #   2. runs ci/device_check.sh here: the standalone project ci/device must configure and build
 #      with nvcc, and the gpu tests must report skip (exit 77) where there is no device;
-#   3. prints the size of what travels (the working tree and build-device/, 64 MiB at most) and
+#   3. packs the CLI of the main build (build/bin/hmfnet, built with the CUDA backend) with its
+#      shared libraries into build-device/hmfnet-cli.tar.xz (ci/device_pack_cli.sh) for the
+#      check's end-to-end `simulate --device cuda`, and tries the pack here (it must load and
+#      refuse --device cuda for want of a device);
+#   4. prints the size of what travels (the working tree and build-device/, 64 MiB at most) and
 #      the device tool's call.
 # Rerun it after changing the CUDA sources, the gpu tests or ci/device.
 #
 #   bash ci/device_prepare.sh     (where several builds share the cores: under flock, as any build)
 #
 # Environment: HMFNET_CATCH2_HEADER (Catch2 2.x's single header, /usr/include/catch2/catch.hpp),
-# HMFNET_DEVICE_BUILD (scratch build folder, /tmp/hmfnet-device-prepare; its logs go beside it).
+# HMFNET_DEVICE_BUILD (scratch build folder, /tmp/hmfnet-device-prepare; its logs go beside it),
+# HMFNET_CLI_BUILD (the main build whose bin/hmfnet is packed, ./build).
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -51,7 +56,24 @@ printf 'built on %s from %s%s (nvcc %s; %s)\n' "$(date -u +%F)" "$(git rev-parse
   "$changed" "$(nvcc --version | grep -o 'V[0-9.]*' | tail -n 1)" "$(c++ --version | head -n 1)" \
   >build-device/PREPARED
 
-# 3. What travels: tracked and untracked files that git does not ignore, and build-device.
+# 3. The CLI, packed and tried.
+cli_build="${HMFNET_CLI_BUILD:-$root/build}"
+if [ -x "$cli_build/bin/hmfnet" ] && grep -q '^HMFNET_CUDA:BOOL=ON' "$cli_build/CMakeCache.txt"; then
+  bash ci/device_pack_cli.sh "$cli_build/bin/hmfnet" build-device/hmfnet-cli.tar.xz
+  try="$scratch/cli-try"
+  rm -rf "$try" && mkdir -p "$try" && tar -xJf build-device/hmfnet-cli.tar.xz -C "$try"
+  "$try/run" hmfnet generate er --n 200 --q 0.1 --seed 1 --output "$try/net.h5" >/dev/null
+  refusal=$("$try/run" hmfnet simulate "$try/net.h5" --K 1 --seed 1 --T 2 --transient 1 \
+    --device cuda 2>&1 || true)
+  if [ "$expected" -eq 77 ]; then
+    grep -q -- '--device cuda: .*run it with --device cpu' <<<"$refusal" \
+      || die "the packed CLI did not refuse --device cuda here as expected: $refusal"
+  fi
+else
+  echo "device_prepare: no $cli_build/bin/hmfnet built with HMFNET_CUDA=ON: the check's simulate --device cuda will skip" >&2
+fi
+
+# 4. What travels: tracked and untracked files that git does not ignore, and build-device.
 tree_bytes=$(git ls-files -co --exclude-standard -z | python3 -c '
 import os, sys
 names = [n for n in sys.stdin.buffer.read().split(b"\0") if n]

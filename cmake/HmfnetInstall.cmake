@@ -29,9 +29,14 @@ file(RELATIVE_PATH _hmfnet_bin_to_lib ${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_BI
 set_target_properties(hmfnet PROPERTIES INSTALL_RPATH "$ORIGIN/${_hmfnet_bin_to_lib}")
 
 install(TARGETS hmfnet RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# hmfnet_cuda (the CUDA backend, where it was built) travels as the dynamics' link-only archive.
+set(_hmfnet_cuda_target "")
+if(HMFNET_CUDA)
+  set(_hmfnet_cuda_target hmfnet_cuda)
+endif()
 install(TARGETS hmfnet_library hmfnet_dynamics hmfnet_analysis hmfnet_parallel hmfnet_core
                 hmfnet_version_info hmfnet_warnings hmfnet_commands hmfnet_cli_options hmfnet_app
-                hmfnet_app_requests
+                hmfnet_app_requests ${_hmfnet_cuda_target}
         EXPORT hmfnetTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})

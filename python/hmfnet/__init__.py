@@ -131,11 +131,11 @@ def simulate(network, *, seed, K=None, K_over_Kc=None, K_sweep=None, sigma0=None
              integrator=None, precision=None, force=None, output=None, checkpoint=None,
              resume=False, node_data=False, rotor_node=None, phase_bins=None,
              restart_each_K=False, K_across_replicas=False, record_stride=None,
-             energy_tolerance=None):
+             energy_tolerance=None, device=None):
     """`hmfnet simulate --json` with the same options (defaults as the CLI: sigma0 0.35,
     omega 6, h 0.01, T 1000, transient 500, leapfrog), set on a typed request and checked by the
     request's own validation (the CLI's messages); threads=0 is the thread rule's count, as
-    leaving it out. Returns its dict; the per-K fields
+    leaving it out; device="cuda" steps on a CUDA GPU (the same bits as "cpu", the default). Returns its dict; the per-K fields
     (K, K_over_Kc, R_mean, R_sem, energy_rel_error_max, momentum_drift) also as numpy arrays,
     R_mean_replicas / R_sem_replicas as [K x replicas] arrays, and ``timeseries`` with t, K
     [records] and R, energy, momentum [records x replicas]. ``output`` writes the CLI's results
@@ -150,7 +150,7 @@ def simulate(network, *, seed, K=None, K_over_Kc=None, K_sweep=None, sigma0=None
         precision=precision, force=force, output=output, checkpoint=checkpoint, resume=resume,
         node_data=node_data, rotor_node=rotor_node, phase_bins=phase_bins,
         restart_each_K=restart_each_K, K_across_replicas=K_across_replicas,
-        record_stride=record_stride, energy_tolerance=energy_tolerance))
+        record_stride=record_stride, energy_tolerance=energy_tolerance, device=device))
     points = out.get("points", [])
     out.update(_per_K_arrays(points, ["K", "K_over_Kc", "R_mean", "R_sem", "energy_rel_error_max",
                                       "momentum_drift", "R_mean_replicas", "R_sem_replicas"]))

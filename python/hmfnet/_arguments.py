@@ -20,7 +20,7 @@ LISTS = frozenset({"K", "K_over_Kc"})
 
 # Options whose value is a word or a path (the rest take numbers), for the TypeError's wording.
 WORDS = frozenset({"momenta", "lambda2", "K_sweep", "output", "checkpoint", "integrator", "force",
-                   "precision", "link"})
+                   "precision", "link", "device"})
 
 
 def _is_bool(value):

@@ -74,6 +74,7 @@ void validate(const SimulateRequest& r) {
   make_integrator(r.integrator);  // unknown names are refused naming the known ones
   require_member("--force", r.force, {"auto", "sparse", "rank-one"});
   require_member("--precision", r.precision, {"float64", "float32"});
+  require_member("--device", r.device, {"cpu", "cuda"});
   // Every range that does not need the network: K_c only scales --K-over-Kc, so 1 stands in.
   validate(simulation_parameters(r, 1.0));
 }
@@ -102,6 +103,7 @@ SimulationParameters simulation_parameters(const SimulateRequest& r, double Kc) 
   p.checkpoint_path = r.checkpoint;
   p.resume = r.resume;
   p.progress = r.progress;
+  p.device = r.device;
   // An explicit count (--threads, or OMP_NUM_THREADS) is the user's; otherwise the work decides.
   if (r.threads > 0) {
     p.threads = r.threads;

@@ -28,6 +28,7 @@ struct SimulateRequest {
   int threads = 0;  ///< 0: the thread rule (dynamics/thread_choice.hpp) or OMP_NUM_THREADS
   std::string output, checkpoint;
   std::string force = "auto", integrator = "leapfrog", precision = "float64";
+  std::string device = "cpu";  ///< cpu, or cuda (dynamics/device_stepper.hpp)
   bool resume = false, node_data = false, restart_each_K = false, K_across_replicas = false;
   int record_stride = 100;
   double energy_tolerance = 1e-2;

@@ -13,6 +13,7 @@
 #include "core/atomic_file.hpp"
 #include "core/distinct_files.hpp"
 #include "core/error.hpp"
+#include "dynamics/device_stepper.hpp"
 #include "dynamics/interrupt.hpp"
 #include "dynamics/run_file.hpp"
 #include "parallel/parallel_session.hpp"
@@ -77,6 +78,7 @@ void write_results_file(const SimulateRequest& r, const SimulateOutcome& o,
       nlohmann::json::parse(provenance("simulate", run_parameters(o.params, meta.inputs_json)));
   prov["ranks"] = o.ranks;
   prov["threads"] = o.threads;
+  prov["device"] = o.device;
   prov["peak_rss_mb_per_rank"] = o.peak_rss_mb_per_rank;
   prov["wall_seconds"] =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - hooks.started).count();
@@ -89,6 +91,8 @@ void write_results_file(const SimulateRequest& r, const SimulateOutcome& o,
 
 void prepare_simulate(const SimulateRequest& r) {
   validate(r);
+  // Before the network is read: an option the device does not take, or a machine without one.
+  if (r.device == "cuda") require_device_for(simulation_parameters(r, 1.0));
   if (r.threads > 0) {
     omp_set_num_threads(r.threads);
   } else if (ParallelSession::ranks() > 1 && std::getenv("OMP_NUM_THREADS") == nullptr) {
@@ -127,6 +131,7 @@ SimulateOutcome simulate(const SimulateRequest& r, const DistributedInput& input
 
   o.momenta = r.momenta;
   o.force = result.force_name;
+  o.device = result.device;
   o.integrator = step_at(o.params, 0).integrator;
   o.steps = result.steps;
   o.integration_seconds = result.integration_seconds;

@@ -42,6 +42,7 @@ struct SimulateOutcome {
   std::int64_t n = 0, nnz = 0, edges = 0;
   double lambda = 0.0, Kc = 0.0;
   std::string momenta, force, integrator;
+  std::string device;  ///< where the steps ran: "cpu" or the GPU's name
   std::int64_t steps = 0;
   double integration_seconds = 0.0;
   /// Stored entries x steps x replica lanes per second of the stepping loop.
@@ -69,6 +70,7 @@ void visit_report_fields(Visitor& v, const SimulateOutcome& o) {
   v.field("momenta", o.momenta);
   v.field("force", o.force);
   v.field("integrator", o.integrator);
+  v.field("device", o.device);
   v.field("steps", o.steps);
   v.field("integration_seconds", o.integration_seconds);
   v.field("nnz_steps_per_second", o.nnz_steps_per_second);

@@ -243,6 +243,9 @@ void add_simulate_options(CLI::App& app, SimulateFlags& f, const Run& run) {
   c->add_option("--precision", r.precision,
                 "Sparse force kernel: float64 (default) or float32 (storage and accumulation of "
                 "the gathered cos/sin; docs/choosing_a_method.md)");
+  c->add_option("--device", r.device,
+                "cpu (default) or cuda: every step on one CUDA GPU, the same bits as the CPU "
+                "(sparse networks on one rank; docs/gpu.md)");
   f.read.add_to(c);
   c->callback(checked(run, f.read));
 }

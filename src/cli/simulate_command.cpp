@@ -35,7 +35,8 @@ std::string report_json(const app::SimulateOutcome& o) {
 std::string report_text(const app::SimulateOutcome& o) {
   std::ostringstream text;
   text << "N = " << o.n << ", nnz = " << o.nnz << ", lambda = " << o.lambda << ", K_c = " << o.Kc
-       << " (" << o.force << " force, " << o.nnz_steps_per_second / 1e9 << " Gnnz*steps/s)\n"
+       << " (" << o.force << " force, " << (o.device == "cpu" ? "" : "on " + o.device + ", ")
+       << o.nnz_steps_per_second / 1e9 << " Gnnz*steps/s)\n"
        << "       K    K/K_c     <R>_t       sem   max dE/E  P drift\n";
   for (const app::PointSummary& p : o.points) {
     char line[128];

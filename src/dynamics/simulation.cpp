@@ -15,11 +15,11 @@
 #include "dynamics/checkpoint_timer.hpp"
 #include "dynamics/interrupt.hpp"
 #include "dynamics/node_statistics.hpp"
-#include "dynamics/ordered_sum.hpp"
 #include "dynamics/progress_line.hpp"
 #include "dynamics/replica_lanes.hpp"
 #include "dynamics/segment_state.hpp"
 #include "dynamics/series_recorder.hpp"
+#include "dynamics/stepper_choice.hpp"
 #include "dynamics/thread_choice.hpp"
 #include "dynamics/time_average.hpp"
 #include "parallel/network_content_hash.hpp"
@@ -57,13 +57,16 @@ TimeOrigin time_origin(const SimulationParameters& p, std::size_t k) {
 }
 
 // One run of the schedule on this rank's rows. The rules that keep it correct:
-//  - m_state, m_f and m_seg travel together: m_f holds the force at m_state's phases (any change
-//    of m_state outside an integrator step is followed by m_f.update), and m_seg holds the
-//    accumulators of the current K, m_seg.step steps into it. What a resume needs is exactly
+//  - m_stepper and m_seg travel together: the stepper holds the state and the force at it (the
+//    state changes only by its advance and set_state), and m_seg holds the accumulators of the
+//    current K, m_seg.step steps into it. The stepper runs chunks of steps alone (chunk_end: up
+//    to the next record, the transient's end, the session's limit); the loop then takes each
+//    step's samples in order, so the chunks change no result. What a resume needs is exactly
 //    RunPosition + SegmentState (segment_state.hpp) + the results so far: a new accumulator goes
 //    into SegmentState and its field list, never into a member of Run.
 //  - m_integrator, m_h and m_origin belong to the current K (step_at); only use_step sets them.
-//  - m_result.steps and m_result.force_evaluations + m_f.count() count every session of the run
+//  - m_result.steps and m_result.force_evaluations + m_stepper->evaluations() count every session
+//  of the run
 //    (a resume starts from the checkpoint's counts); every exit from the stepping loop goes
 //    through finish(), which sets the counts and the integration time.
 //  - Collective (every rank calls them at the same step, in the same order): order_parameter,
@@ -76,16 +79,16 @@ class Run {
   /// `lane_K`: each replica's K for a run across replicas (replica_lanes.hpp), or empty: every
   /// replica at the schedule's K. `identity`: the parameters the checkpoint's fingerprint names.
   Run(const DistributedNetwork& network, const std::vector<double>& degrees, CouplingForce& force,
-      const SimulationParameters& params, std::vector<double> lane_K,
-      const SimulationParameters& identity)
+      std::unique_ptr<EnsembleStepper> stepper, const SimulationParameters& params,
+      std::vector<double> lane_K, const SimulationParameters& identity)
       : m_network(network),
         m_force(force),
+        m_stepper(std::move(stepper)),
         m_params(params),
         m_identity(identity),
         m_lane_K(std::move(lane_K)),
         m_integrator(make_integrator(step_at(params, 0).integrator)),
         m_h(step_at(params, 0).h),
-        m_f(force),
         m_width(static_cast<int>(params.replicas.size())),
         m_total_degree(std::accumulate(degrees.begin(), degrees.end(), 0.0)),
         m_n(static_cast<double>(network.global_size())),
@@ -107,7 +110,7 @@ class Run {
     return std::vector<double>(static_cast<std::size_t>(m_width),
                                m_params.K[static_cast<std::size_t>(k)]);
   }
-  std::vector<double> order_parameter() const;
+  std::vector<double> order_parameter(std::vector<double> order_sums) const;
   Observables observe(const std::vector<double>& K) const;
   std::vector<double> energy_errors(const Observables& o) const;
   void use_step(int k_index);
@@ -117,7 +120,8 @@ class Run {
   void start_segment(int k_index);
   void finish_segment(int k_index);
   bool record(int k_index);
-  void sample();
+  void sample(const std::vector<double>& order_sums);
+  std::int64_t chunk_end(std::int64_t session_steps_left) const;
   void write_checkpoint_now();
   void finish(bool interrupted);
   void restore(const Checkpoint& c);
@@ -141,6 +145,7 @@ class Run {
 
   const DistributedNetwork& m_network;
   CouplingForce& m_force;
+  std::unique_ptr<EnsembleStepper> m_stepper;  // the state (theta, p) and the force at it
   const SimulationParameters& m_params;
   const SimulationParameters& m_identity;
   std::string m_fingerprint;  // run_fingerprint(), formed once
@@ -148,12 +153,10 @@ class Run {
   std::unique_ptr<Integrator> m_integrator;  // of the current segment (step_at)
   double m_h;                                // of the current segment
   TimeOrigin m_origin;                       // of the current segment (time_origin)
-  ForceEvaluation m_f;
   int m_width;
   double m_total_degree;
   double m_n;
   RowExchange m_exchange;  // this rank's rows <-> whole-network arrays
-  RotorState m_state;
   SegmentState m_seg;
   SimulationResult m_result;
   // The observers of the records (run_record.hpp), in the order they see each one; the checkpoint
@@ -168,34 +171,24 @@ class Run {
   Clock::time_point m_loop_start{};
 };
 
-std::vector<double> Run::order_parameter() const {
+std::vector<double> Run::order_parameter(std::vector<double> order_sums) const {
   // eq:globalOrderParam: R = sum_n R_n / ||d|| = sum_n |y_n| / sum_n d_n.
-  std::vector<double> R = m_f.sums().order;
+  std::vector<double> R = std::move(order_sums);
   ParallelSession::sum_in_place(R);
   for (double& x : R) x /= m_total_degree;
   return R;
 }
 
 Observables Run::observe(const std::vector<double>& K) const {
-  const auto rows = static_cast<std::size_t>(m_state.rows);
-  std::vector<double> p2(m_state.p.size()), absp(m_state.p.size());
-  for (std::size_t k = 0; k < p2.size(); ++k) {
-    p2[k] = 0.5 * m_state.p[k] * m_state.p[k];
-    absp[k] = std::abs(m_state.p[k]);
-  }
-  Observables o;
-  std::vector<double> kinetic, momentum, scale;
-  ordered_column_sums(p2, rows, m_width, kinetic);
-  ordered_column_sums(m_state.p, rows, m_width, momentum);
-  ordered_column_sums(absp, rows, m_width, scale);
-  std::vector<double> coupling = m_f.sums().coupling;
+  StepperSums s = m_stepper->sums();
   // One reduction for all four sums.
   std::vector<double> all;
-  for (const auto* v : {&kinetic, &momentum, &scale, &coupling})
+  for (const auto* v : {&s.kinetic, &s.momentum, &s.momentum_scale, &s.coupling})
     all.insert(all.end(), v->begin(), v->end());
   ParallelSession::sum_in_place(all);
   const auto w = static_cast<std::size_t>(m_width);
-  o.R = order_parameter();
+  Observables o;
+  o.R = order_parameter(std::move(s.order));
   for (std::size_t b = 0; b < w; ++b) {
     // eq:hamiltonianNetworkCase: H = sum p^2/2 - (K/2N) sum_nm A_nm cos(theta_m - theta_n).
     o.energy.push_back(all[b] - K[b] / (2.0 * m_n) * all[3 * w + b]);
@@ -216,8 +209,8 @@ SegmentState Run::fresh_segment(double omega) const {
   SegmentState s;
   s.R = BatchMeans(segment_steps() - transient_steps(), m_params.batches, m_width);
   if (m_params.node_data) {
-    s.stats = NodeStatistics(m_state.first_row, m_state.rows, m_params.rotor_node, rotor_samples(),
-                             m_params.phase_bins, omega);
+    s.stats = NodeStatistics(m_network.first_row(), m_network.local_size(), m_params.rotor_node,
+                             rotor_samples(), m_params.phase_bins, omega);
   }
   return s;
 }
@@ -225,8 +218,8 @@ SegmentState Run::fresh_segment(double omega) const {
 void Run::start_segment(int k_index) {
   use_step(k_index);
   if (!m_params.continue_state && k_index > 0) {
-    m_state = initial_state(m_network.first_row(), m_network.local_size(), m_params.replicas);
-    m_f.update(m_state);
+    m_stepper->set_state(
+        initial_state(m_network.first_row(), m_network.local_size(), m_params.replicas));
   }
   const Observables o = observe(segment_K(k_index));
   m_seg = fresh_segment(o.momentum[0] / m_n);
@@ -236,8 +229,8 @@ void Run::start_segment(int k_index) {
   m_seg.energy_err_max.assign(static_cast<std::size_t>(m_width), 0.0);
   m_seg.momentum_drift_max.assign(static_cast<std::size_t>(m_width), 0.0);
   if (m_params.node_data) {
-    m_seg.R_node_sum.assign(m_state.p.size(), 0.0);
-    if (transient_steps() == 0) m_seg.theta_T1 = m_state.theta;
+    m_seg.R_node_sum.assign(m_stepper->state().p.size(), 0.0);
+    if (transient_steps() == 0) m_seg.theta_T1 = m_stepper->state().theta;
   }
 }
 
@@ -249,15 +242,16 @@ std::int64_t Run::rotor_samples() const {
   return steps / stride - transient / stride + (steps % stride != 0 ? 1 : 0);
 }
 
-void Run::sample() {
-  m_seg.R.add(order_parameter());
+// One step's samples: R (eq:timeAverage) from the step's order sums, and the node data.
+void Run::sample(const std::vector<double>& order_sums) {
+  m_seg.R.add(order_parameter(order_sums));
   if (!m_params.node_data) return;
-  const auto& y = m_force.local_fields();
+  const auto& y = m_stepper->local_fields();
   for (std::size_t k = 0; k < m_seg.R_node_sum.size(); ++k) {
     m_seg.R_node_sum[k] += std::sqrt(y[2 * k] * y[2 * k] + y[2 * k + 1] * y[2 * k + 1]) / m_n;
   }
   const double t = static_cast<double>(m_seg.step) * m_h;
-  m_seg.stats.add(m_state, y, t, m_n);
+  m_seg.stats.add(m_stepper->state(), y, t, m_n);
   // psi_n - psi_1 once per time unit (Fig. histPsinMinusPsi1).
   const std::int64_t per_unit = std::max<std::int64_t>(1, std::llround(1.0 / m_h));
   if (m_seg.step % per_unit == 0) m_seg.stats.add_phase_sample(y, m_width);
@@ -272,7 +266,7 @@ std::vector<double> Run::energy_errors(const Observables& o) const {
 }
 
 double Run::max_node_order() const {
-  const auto& y = m_force.local_fields();
+  const auto& y = m_stepper->local_fields();
   double max_r = 0.0;
   for (std::size_t k = 0; 2 * k + 1 < y.size(); ++k) {
     max_r = std::max(max_r, std::hypot(y[2 * k], y[2 * k + 1]) / m_n);
@@ -286,7 +280,7 @@ bool Run::record(int k_index) {
   const std::vector<double> K = segment_K(k_index);
   const Observables o = observe(K);
   if (m_params.node_data && m_seg.step > transient_steps()) {
-    m_seg.stats.add_rotor_sample(m_state, static_cast<double>(m_seg.step) * m_h);
+    m_seg.stats.add_rotor_sample(m_stepper->state(), static_cast<double>(m_seg.step) * m_h);
   }
   const std::vector<double> errors = energy_errors(o);
   for (std::size_t b = 0; b < errors.size(); ++b) {
@@ -324,11 +318,11 @@ void Run::write_checkpoint_now() {
   RunPosition position;
   position.k_index = m_k;
   position.steps_total = m_result.steps;
-  position.evaluations = m_f.count() + m_result.force_evaluations;
+  position.evaluations = m_stepper->evaluations() + m_result.force_evaluations;
   position.integration_seconds =
       m_seconds_before + std::chrono::duration<double>(Clock::now() - m_loop_start).count();
-  position.theta = m_state.theta;
-  position.p = m_state.p;
+  position.theta = m_stepper->state().theta;
+  position.p = m_stepper->state().p;
   Checkpoint c;
   c.fingerprint = run_fingerprint();
   c.replicas = m_width;
@@ -343,10 +337,11 @@ void Run::finish(bool interrupted) {
   m_result.interrupted = interrupted;
   m_result.integration_seconds =
       m_seconds_before + std::chrono::duration<double>(Clock::now() - m_loop_start).count();
-  m_result.force_evaluations += m_f.count();
+  m_result.force_evaluations += m_stepper->evaluations();
   m_result.nnz_per_evaluation = static_cast<EdgeOffset>(
       ParallelSession::sum(static_cast<double>(m_force.work_per_evaluation())));
   m_result.force_name = m_force.name();
+  m_result.device = m_stepper->device();
 }
 
 void Run::restore(const Checkpoint& c) {
@@ -366,13 +361,14 @@ void Run::restore(const Checkpoint& c) {
   m_seg = fresh_segment(0.0);  // shapes only: the frame frequency is restored with the rest
   RunPosition position;
   hmfnet::restore(c.record, position, m_seg, m_width, m_exchange);
-  m_state.theta = std::move(position.theta);
-  m_state.p = std::move(position.p);
-  m_f.update(m_state);
+  RotorState state = m_stepper->state();
+  state.theta = std::move(position.theta);
+  state.p = std::move(position.p);
+  m_stepper->set_state(state);
   m_result.points = c.points;
   m_result.series = c.series;
   m_result.steps = position.steps_total;
-  m_result.force_evaluations = position.evaluations - m_f.count();
+  m_result.force_evaluations = position.evaluations - m_stepper->evaluations();
   m_seconds_before = position.integration_seconds;
   m_result.resumed = true;
 }
@@ -388,9 +384,10 @@ void Run::finish_segment(int k_index) {
   point.momentum_drift = m_seg.momentum_drift_max;
   if (m_params.node_data) {
     const double span = m_params.duration - m_params.transient;
-    std::vector<double> omega(m_state.theta.size()), r_node(m_seg.R_node_sum.size());
+    const std::vector<double>& theta = m_stepper->state().theta;
+    std::vector<double> omega(theta.size()), r_node(m_seg.R_node_sum.size());
     for (std::size_t k = 0; k < omega.size(); ++k) {
-      omega[k] = (m_state.theta[k] - m_seg.theta_T1[k]) / span;
+      omega[k] = (theta[k] - m_seg.theta_T1[k]) / span;
       r_node[k] = m_seg.R_node_sum[k] / static_cast<double>(m_seg.R.count());
     }
     const auto w = static_cast<std::size_t>(m_width);
@@ -409,9 +406,26 @@ void Run::finish_segment(int k_index) {
   m_result.points.push_back(std::move(point));
 }
 
+// The last step of the next chunk the stepper runs alone: the next record (a multiple of the
+// stride, or the segment's end), the end of the transient (the samples start after it, and node
+// data take theta_T1 there), one step while node data are sampled (they read every step's y_n),
+// and the steps this session may still take (`left`, -1: no limit).
+std::int64_t Run::chunk_end(std::int64_t left) const {
+  const std::int64_t step = m_seg.step;
+  const std::int64_t stride = m_params.record_stride;
+  std::int64_t end = std::min(segment_steps(), (step / stride + 1) * stride);
+  if (step < transient_steps()) {
+    end = std::min(end, transient_steps());
+  } else if (m_params.node_data) {
+    end = step + 1;
+  }
+  if (left >= 0) end = std::min(end, step + left);
+  return end;
+}
+
 SimulationResult Run::execute() {
-  m_state = initial_state(m_network.first_row(), m_network.local_size(), m_params.replicas);
-  m_f.update(m_state);
+  m_stepper->set_state(
+      initial_state(m_network.first_row(), m_network.local_size(), m_params.replicas));
   const bool resuming = m_params.resume && !m_params.checkpoint_path.empty() &&
                         std::filesystem::exists(m_params.checkpoint_path);
   if (resuming) {
@@ -423,6 +437,8 @@ SimulationResult Run::execute() {
   m_checkpoints.restart();
   m_progress.start(m_result.steps, segment_K(m_k_start).front());
   std::int64_t session_steps = 0;
+  const auto w = static_cast<std::ptrdiff_t>(m_width);
+  std::vector<double> order;  // a chunk's order sums, steps x replicas
   for (int k = m_k_start; k < static_cast<int>(m_params.K.size()); ++k) {
     m_k = k;
     if (k != m_k_start) {
@@ -432,15 +448,26 @@ SimulationResult Run::execute() {
     const std::vector<double> K = segment_K(k);
     const std::int64_t steps = segment_steps(), transient = transient_steps();
     while (m_seg.step < steps) {
-      if (m_params.stop_after_steps > 0 && ++session_steps > m_params.stop_after_steps) {
-        finish(true);
-        return m_result;
+      std::int64_t left = -1;
+      if (m_params.stop_after_steps > 0) {
+        left = m_params.stop_after_steps - session_steps;
+        if (left == 0) {
+          finish(true);
+          return m_result;
+        }
       }
-      m_integrator->step(m_state, m_h, K, m_f);
-      ++m_seg.step;
-      ++m_result.steps;
-      if (m_seg.step > transient) sample();
-      if (m_seg.step == transient && m_params.node_data) m_seg.theta_T1 = m_state.theta;
+      const std::int64_t n = chunk_end(left) - m_seg.step;
+      const bool sampled = m_seg.step >= transient;  // every step of the chunk, or none
+      order.clear();
+      m_stepper->advance(*m_integrator, m_h, K, n, sampled ? &order : nullptr);
+      session_steps += n;
+      m_result.steps += n;
+      for (std::int64_t i = 0; i < n; ++i) {
+        ++m_seg.step;
+        if (sampled)
+          sample(std::vector<double>(order.begin() + i * w, order.begin() + (i + 1) * w));
+      }
+      if (m_seg.step == transient && m_params.node_data) m_seg.theta_T1 = m_stepper->state().theta;
       if ((m_seg.step % m_params.record_stride == 0 || m_seg.step == steps) && record(k)) {
         finish(true);
         return m_result;
@@ -470,10 +497,11 @@ SimulationResult simulate(const DistributedNetwork& network, const std::vector<d
   SimulationResult result;
   if (params.K_across_replicas) {
     const SimulationParameters one_pass = lane_parameters(params);
-    Run run(network, degrees, force, one_pass, lane_couplings(params), params);
+    Run run(network, degrees, force, make_stepper(network, force, one_pass), one_pass,
+            lane_couplings(params), params);
     result = split_lanes(run.execute(), params);
   } else {
-    Run run(network, degrees, force, params, {}, params);
+    Run run(network, degrees, force, make_stepper(network, force, params), params, {}, params);
     result = run.execute();
   }
   result.threads = omp_get_max_threads();

@@ -37,6 +37,7 @@ struct SimulationResult {
   std::int64_t thread_rule_work = 0;  ///< this rank's work per step for the thread rule
   int lanes = 1;                      ///< replicas integrated side by side per step (lanes(params))
   std::string force_name;
+  std::string device = "cpu";  ///< where the steps ran (EnsembleStepper::device)
   bool resumed = false;
   bool interrupted = false;  ///< stopped by stop_after_steps or a signal: points incomplete
 };

@@ -121,6 +121,8 @@ void validate(const SimulationParameters& p) {
   if (p.rotor_node < 0) throw ParameterError("rotor node", std::to_string(p.rotor_node), ">= 0");
   if (p.threads < 0)
     throw ParameterError("threads", std::to_string(p.threads), ">= 0 (0: default)");
+  if (p.device != "cpu" && p.device != "cuda")
+    throw ParameterError("device", p.device, "cpu, cuda");
   if (!positive(p.energy_tolerance)) {
     throw ParameterError("energy tolerance", number_text(p.energy_tolerance), "> 0");
   }

@@ -55,6 +55,9 @@ struct SimulationParameters {
   /// OpenMP threads per rank: 0 lets the work per step choose (default_threads,
   /// thread_choice.hpp) among the threads OpenMP offers. Results are bit-identical for any count.
   int threads = 0;
+  /// Where the steps run: "cpu", or "cuda" (device_stepper.hpp: the same bits, so a checkpoint
+  /// resumes on either).
+  std::string device = "cpu";
 };
 
 /// Replicas integrated side by side in each step: replicas.size(), times K.size() when

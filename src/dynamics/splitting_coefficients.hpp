@@ -3,6 +3,8 @@
 // written once for the CPU integrators and the CUDA steppers (dynamics/cuda), which apply the
 // same table: kick b_0 h, drift a_0 h, kick b_1 h, ..., drift a_{s-1} h, kick b_s h.
 #include <cmath>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace hmfnet {
@@ -35,6 +37,15 @@ inline SplittingCoefficients blanes_moan4_coefficients() {
   const double a2 = 0.604872665711080;
   const double a3 = 0.5 - (a1 + a2);
   return {{b1, b2, b3, b4, b3, b2, b1}, {a1, a2, a3, a3, a2, a1}};
+}
+
+/// The table of an integrator by its name (make_integrator's names): leapfrog, yoshida4,
+/// blanes_moan; none for a method that is not a kick-drift splitting (rk4).
+inline std::optional<SplittingCoefficients> splitting_coefficients(const std::string& name) {
+  if (name == "leapfrog") return leap_frog_coefficients();
+  if (name == "yoshida4") return yoshida4_coefficients();
+  if (name == "blanes_moan") return blanes_moan4_coefficients();
+  return std::nullopt;
 }
 
 }  // namespace hmfnet

@@ -200,6 +200,7 @@ void bind_simulate_request(py::module_& m) {
       .def_readwrite("force", &app::SimulateRequest::force)
       .def_readwrite("integrator", &app::SimulateRequest::integrator)
       .def_readwrite("precision", &app::SimulateRequest::precision)
+      .def_readwrite("device", &app::SimulateRequest::device)
       .def_readwrite("resume", &app::SimulateRequest::resume)
       .def_readwrite("node_data", &app::SimulateRequest::node_data)
       .def_readwrite("restart_each_K", &app::SimulateRequest::restart_each_K)

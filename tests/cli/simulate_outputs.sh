@@ -5,6 +5,8 @@
 # with `--force rank-one` (that path has no float32 variant); `--K-across-replicas` gives the
 # numbers of `--restart-each-K` (one pass for every K) and is refused with `--node-data`;
 # `--momenta waterbag` reports K_c = 6 sigma0^2 N / lambda, three times the Gaussian's.
+# `--device cuda` gives the CPU's numbers bit for bit where a CUDA device runs it (--json prints
+# doubles to round-trip precision), and elsewhere is refused in one line naming why.
 # Usage: simulate_outputs.sh HMFNET NETWORK OUTDIR
 set -euo pipefail
 hmfnet=$1 net=$2 out=$3
@@ -26,11 +28,26 @@ if "$hmfnet" "${args[@]}" --precision float32 --force rank-one 2> "$out/refusal.
 fi
 grep -q -- "--precision: float32 (allowed: only for the sparse force" "$out/refusal.txt" \
   || { echo "unexpected refusal: $(cat "$out/refusal.txt")"; exit 1; }
+if device=$("$hmfnet" "${args[@]}" --replicas 2 --integrator yoshida4 --device cuda \
+    2> "$out/refusal.txt"); then
+  echo "a CUDA device ran it: comparing with the CPU"
+  cpu=$("$hmfnet" "${args[@]}" --replicas 2 --integrator yoshida4 --device cpu)
+else
+  grep -q -- "^hmfnet: error: --device cuda: .*; run it with --device cpu" "$out/refusal.txt" \
+    || { echo "unexpected refusal: $(cat "$out/refusal.txt")"; exit 1; }
+  test "$(wc -l < "$out/refusal.txt")" -eq 1 || { echo "refusal not one line"; exit 1; }
+  device='{"device": "none"}' cpu='{"device": "none"}'
+fi
 test -s "$out/sim.h5" || { echo "no results file written"; exit 1; }
 ls "$out"/sim.h5.tmp.* 2>/dev/null && { echo "temporary left behind"; exit 1; }
-python3 - "$plain" "$resumed" "$single" "$restart" "$across" "$waterbag" <<'PY'
+python3 - "$plain" "$resumed" "$single" "$restart" "$across" "$waterbag" "$device" "$cpu" <<'PY'
 import json, sys
-a, b, f, r, x, w = (json.loads(x) for x in sys.argv[1:7])
+a, b, f, r, x, w, d, c = (json.loads(x) for x in sys.argv[1:9])
+assert a["device"] == "cpu", a["device"]
+if d["device"] != "none":
+    assert d["device"] != "cpu" and c["device"] == "cpu", (d["device"], c["device"])
+    assert d["points"] == c["points"], ("the device's numbers differ", d["points"], c["points"])
+    assert d["steps"] == c["steps"], (d["steps"], c["steps"])
 assert a["momenta"] == "gaussian" and w["momenta"] == "waterbag", (a["momenta"], w["momenta"])
 assert abs(w["Kc"] - 3 * a["Kc"]) <= 1e-12 * a["Kc"], (w["Kc"], a["Kc"])
 assert [p["R_mean"] for p in w["points"]] != [p["R_mean"] for p in a["points"]], "same momenta"

@@ -16,10 +16,12 @@
 #include <cstring>
 #include <ios>
 #include <limits>
+#include <memory>
 #include <random>
 #include <utility>
 #include <vector>
 
+#include "dynamics/host_stepper.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/kernel_arithmetic.hpp"
 #include "dynamics/network_force.hpp"
@@ -357,4 +359,51 @@ TEST_CASE(
   host.advance(leap_frog_coefficients(), 0.1, 25);
   CHECK(bit_difference(host.theta, cpu.theta).count == 0);
   CHECK(bit_difference(host.p, cpu.p).count == 0);
+}
+
+TEST_CASE(
+    "the gpu tests' host stepper's per-step order sums and record sums equal the CPU stepper's "
+    "bit for bit [ER N=4500: three sum blocks]",
+    "[kernel_arithmetic]") {
+  if (ParallelSession::ranks() > 1) {
+    SUCCEED("one rank only: the host stepper holds the whole network");
+    return;
+  }
+  // The device's sums are compared with the host stepper's (tests/gpu), these with the CPU's
+  // HostStepper, which the simulation protocol reads: per step sum_n |y_n| (the time average),
+  // at a record the five sums of the observables.
+  const Network net = erdos_renyi({4500, 8.0 / 4499.0, 31});
+  const DistributedNetwork network(net);
+  std::vector<InitialCondition> ic;
+  std::vector<double> K;
+  for (int b = 0; b < 3; ++b) {
+    ic.push_back({0.5, 0.6, static_cast<std::uint64_t>(b + 5), MomentumDistribution::waterbag});
+    K.push_back(2.0 + 1.5 * b);
+  }
+  for (const ForcePrecision precision : {ForcePrecision::float64, ForcePrecision::float32}) {
+    NetworkForce force(network, precision);
+    HostStepper cpu(force);
+    cpu.set_state(initial_state(network.first_row(), network.local_size(), ic));
+    gpu_test::HostEnsemble host(host_csr(network), 3, precision == ForcePrecision::float32);
+    host.K = K;
+    host.set_state(cpu.state().theta, cpu.state().p);
+    std::vector<double> cpu_order, host_order;
+    const std::unique_ptr<Integrator> yoshida = make_integrator("yoshida4");
+    cpu.advance(*yoshida, 0.05, K, 7, &cpu_order);
+    host.advance(yoshida4_coefficients(), 0.05, 7, &host_order);
+    INFO(to_string(precision));
+    REQUIRE(cpu_order.size() == 7 * 3);
+    CHECK(bit_difference(host_order, cpu_order).count == 0);
+    const StepperSums a = cpu.sums();
+    const cuda::EnsembleSums b = host.sums();
+    CHECK(bit_difference(b.order, a.order).count == 0);
+    CHECK(bit_difference(b.coupling, a.coupling).count == 0);
+    CHECK(bit_difference(b.kinetic, a.kinetic).count == 0);
+    CHECK(bit_difference(b.momentum, a.momentum).count == 0);
+    CHECK(bit_difference(b.momentum_scale, a.momentum_scale).count == 0);
+    // Each step's order sums are the force's at that step's end: the last equal the record's.
+    CHECK(
+        bit_difference(std::vector<double>(cpu_order.end() - 3, cpu_order.end()), a.order).count ==
+        0);
+  }
 }

@@ -85,7 +85,9 @@ class HostEnsemble {
     evaluate();
   }
 
-  void advance(const SplittingCoefficients& c, double h, std::int64_t steps) {
+  /// With `order`: each step's sum_n |y_n| per replica appended (SparseEnsemble::advance).
+  void advance(const SplittingCoefficients& c, double h, std::int64_t steps,
+               std::vector<double>* order = nullptr) {
     for (std::int64_t s = 0; s < steps; ++s) {
       for (std::size_t i = 0; i < c.drifts.size(); ++i) {
         for (std::size_t k = 0; k < cells(); ++k) {
@@ -97,7 +99,29 @@ class HostEnsemble {
       for (std::size_t k = 0; k < cells(); ++k) {
         p[k] = kicked_momentum(p[k], c.kicks.back() * h, K[k % m_w], m_g[k]);
       }
+      if (order != nullptr) {
+        const std::vector<double> o = ordered_sums(order_terms());
+        order->insert(order->end(), o.begin(), o.end());
+      }
     }
+  }
+
+  /// The record's sums at the current state in OrderedColumnSums' order (the CPU's
+  /// HostStepper::sums and SparseEnsemble::sums).
+  cuda::EnsembleSums sums() const {
+    std::vector<double> coupling(cells()), kinetic(cells()), magnitude(cells());
+    for (std::size_t k = 0; k < cells(); ++k) {
+      coupling[k] = coupling_term(m_cs[2 * k], m_cs[2 * k + 1], m_y[k]);
+      kinetic[k] = 0.5 * p[k] * p[k];
+      magnitude[k] = std::abs(p[k]);
+    }
+    cuda::EnsembleSums s;
+    s.order = ordered_sums(order_terms());
+    s.coupling = ordered_sums(coupling);
+    s.kinetic = ordered_sums(kinetic);
+    s.momentum = ordered_sums(p);
+    s.momentum_scale = ordered_sums(magnitude);
+    return s;
   }
 
   /// Per replica H = sum p^2 / 2 - K / (2N) sum Re(e^{-i theta_n} y_n), summed plainly.
@@ -115,6 +139,27 @@ class HostEnsemble {
 
  private:
   std::size_t cells() const { return static_cast<std::size_t>(m_n) * m_w; }
+
+  std::vector<double> order_terms() const {
+    std::vector<double> t(cells());
+    for (std::size_t k = 0; k < cells(); ++k) t[k] = order_term(m_y[k]);
+    return t;
+  }
+
+  // Column sums of rows x replicas values as OrderedColumnSums forms them: 2048-row blocks each
+  // from 0 in order, then the blocks in order from 0.
+  std::vector<double> ordered_sums(const std::vector<double>& values) const {
+    std::vector<double> out(m_w, 0.0);
+    for (std::int64_t first = 0; first < m_n; first += 2048) {
+      std::vector<double> block(m_w, 0.0);
+      for (std::int64_t r = first; r < std::min(m_n, first + 2048); ++r) {
+        for (std::size_t b = 0; b < m_w; ++b)
+          block[b] += values[static_cast<std::size_t>(r) * m_w + b];
+      }
+      for (std::size_t b = 0; b < m_w; ++b) out[b] += block[b];
+    }
+    return out;
+  }
 
   void evaluate() {
     m_cs.assign(2 * cells(), 0.0);

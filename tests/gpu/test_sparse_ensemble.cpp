@@ -1,8 +1,9 @@
 // The device's sparse step against the CPU's (host_ensemble.hpp, the CPU's arithmetic in its
 // order): bit for bit in float64 and float32, with a K per replica; the same bits run to run
 // and whatever the threads per block; a run moved between device and host mid-way (the state
-// a checkpoint holds) goes on with the same bits both ways; the energy error falls as h^2
-// (leap-frog) and h^4 (yoshida4); float32's energy error against float64's; memory refused
+// a checkpoint holds) goes on with the same bits both ways; each step's order sums and a
+// record's sums (what simulate --device cuda reads back) are the CPU's bits; the energy error falls
+// as h^2 (leap-frog) and h^4 (yoshida4); float32's energy error against float64's; memory refused
 // before anything is allocated.
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -159,6 +160,46 @@ TEST_CASE("a run moved device -> host and host -> device mid-way keeps its bits"
   e.get_state(theta, p);
   CHECK(differing(theta, whole.theta) == 0);
   CHECK(differing(p, whole.p) == 0);
+}
+
+TEST_CASE(
+    "each step's order sums and a record's five sums are the CPU's bits, in chunks, over three "
+    "sum blocks",
+    "[gpu][sparse]") {
+  // What `hmfnet simulate --device cuda` reads back (device_stepper.cpp): per step sum_n |y_n|
+  // for the time average, at a record the sums of the observables, both in OrderedColumnSums'
+  // order (N = 4500: three 2048-row blocks), across chunks of several lengths.
+  const cuda::HostCsr net = gpu_test::random_network(4500, 8.0, 17);
+  std::vector<double> theta, p;
+  gpu_test::waterbag(net.rows, static_cast<int>(k_replicas), 0.6, 3, theta, p);
+  const std::vector<double> K = {2.0, 3.5, 5.0};
+  for (const bool float32 : {false, true}) {
+    cuda::SparseEnsemble e(
+        net, static_cast<int>(k_replicas),
+        float32 ? cuda::DevicePrecision::float32 : cuda::DevicePrecision::float64);
+    e.set_coupling(K);
+    e.set_state(theta, p);
+    HostEnsemble host(net, static_cast<int>(k_replicas), float32);
+    host.K = K;
+    host.set_state(theta, p);
+    std::vector<double> device_order, host_order;
+    for (const std::int64_t chunk : {1, 7, 3, 20}) {
+      e.advance(yoshida4_coefficients(), 0.05, chunk, &device_order);
+      host.advance(yoshida4_coefficients(), 0.05, chunk, &host_order);
+      e.advance(yoshida4_coefficients(), 0.05, chunk);  // no sums asked: the same steps
+      host.advance(yoshida4_coefficients(), 0.05, chunk);
+    }
+    INFO((float32 ? "float32" : "float64"));
+    REQUIRE(device_order.size() == 31 * k_replicas);
+    CHECK(differing(device_order, host_order) == 0);
+    const cuda::EnsembleSums d = e.sums();
+    const cuda::EnsembleSums h = host.sums();
+    CHECK(differing(d.order, h.order) == 0);
+    CHECK(differing(d.coupling, h.coupling) == 0);
+    CHECK(differing(d.kinetic, h.kinetic) == 0);
+    CHECK(differing(d.momentum, h.momentum) == 0);
+    CHECK(differing(d.momentum_scale, h.momentum_scale) == 0);
+  }
 }
 
 TEST_CASE("the energy error falls as h^2 (leap-frog) and h^4 (yoshida4); float32 against float64",

@@ -115,12 +115,13 @@ __global__ void __launch_bounds__(1024) force_kernel(ForceArgs<T> a) {
   }
 }
 
-// Per cell: p^2 / 2 as Run::observe forms it (simulation.cpp).
+// Per cell: p^2 / 2 and |p| as the CPU's stepper forms them (host_stepper.cpp).
 __global__ void __launch_bounds__(1024)
-    kinetic_kernel(const double* p, std::int64_t cells, double* out) {
+    kinetic_kernel(const double* p, std::int64_t cells, double* kinetic, double* magnitude) {
   const std::int64_t k = static_cast<std::int64_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (k >= cells) return;
-  out[k] = 0.5 * p[k] * p[k];
+  kinetic[k] = 0.5 * p[k] * p[k];
+  magnitude[k] = fabs(p[k]);
 }
 
 // OrderedColumnSums::sum's block partials: one thread per (block, column), rows in order from 0.
@@ -136,6 +137,17 @@ __global__ void block_sums_kernel(const double* values, std::int64_t rows, int w
   double sum = 0.0;
   for (std::int64_t r = block * k_sum_block_rows; r < end; ++r) sum += values[r * width + column];
   partial[i] = sum;
+}
+
+// OrderedColumnSums::add_blocks for `columns` of the partials' columns (every `stride`-th from
+// `first`): from 0, the blocks in order. One thread per column.
+__global__ void add_blocks_kernel(const double* partial, std::int64_t blocks, int width, int first,
+                                  int stride, int columns, double* out) {
+  const int j = static_cast<int>(blockIdx.x * blockDim.x + threadIdx.x);
+  if (j >= columns) return;
+  double sum = 0.0;
+  for (std::int64_t b = 0; b < blocks; ++b) sum += partial[b * width + first + j * stride];
+  out[j] = sum;
 }
 
 // The directed G(N, p) row by row: geometric gaps between successive columns, from a
@@ -181,9 +193,9 @@ __global__ void er_fill_kernel(std::uint64_t seed, std::int64_t n, double log_q,
 
 std::size_t state_bytes(std::int64_t rows, int replicas, DevicePrecision precision) {
   const auto cells = static_cast<std::size_t>(rows) * static_cast<std::size_t>(replicas);
-  // theta, p, g, cs (2), terms (2), the kinetic scratch, and the float32 table.
+  // theta, p, g, cs (2), terms (2), the kinetic and |p| scratch, and the float32 table.
   const std::size_t per_cell =
-      8 * sizeof(double) + (precision == DevicePrecision::float32 ? 2 * sizeof(float) : 0);
+      9 * sizeof(double) + (precision == DevicePrecision::float32 ? 2 * sizeof(float) : 0);
   return cells * per_cell;
 }
 
@@ -197,7 +209,7 @@ struct SparseEnsemble::Impl {
   int threads = 256;
   DeviceBuffer<std::int64_t> offsets;
   DeviceBuffer<std::int32_t> columns;
-  DeviceBuffer<double> theta, p, g, cs, terms, scratch, K, partial;
+  DeviceBuffer<double> theta, p, g, cs, terms, scratch, magnitude, K, partial, order_steps;
   DeviceBuffer<float> cs32;
 
   std::int64_t cells() const { return rows * replicas; }
@@ -212,6 +224,7 @@ struct SparseEnsemble::Impl {
     cs.allocate(2 * c);
     terms.allocate(2 * c);
     scratch.allocate(c);
+    magnitude.allocate(c);
     if (precision == DevicePrecision::float32) cs32.allocate(2 * c);
     const std::vector<double> ones(static_cast<std::size_t>(replicas), 1.0);
     K.upload(ones.data(), ones.size());
@@ -249,13 +262,30 @@ struct SparseEnsemble::Impl {
     evaluate(false);
   }
 
-  // Column sums of rows x width values in OrderedColumnSums' order.
-  std::vector<double> ordered_sums(const double* values, int width) {
-    const std::int64_t blocks = (rows + k_sum_block_rows - 1) / k_sum_block_rows;
-    const auto n = static_cast<std::size_t>(blocks * width);
+  std::int64_t sum_blocks() const { return (rows + k_sum_block_rows - 1) / k_sum_block_rows; }
+
+  // Each block's column sums of rows x width values, into `partial`.
+  void block_sums(const double* values, int width) {
+    const auto n = static_cast<std::size_t>(sum_blocks() * width);
     if (partial.size() < n) partial.allocate(n);
     block_sums_kernel<<<blocks_for(n, 128), 128>>>(values, rows, width, partial.data());
     check_launch("block sums kernel");
+  }
+
+  // The order sums (sum_n |y_n| per replica) of the terms just evaluated, in OrderedColumnSums'
+  // order, left on the device at `out` (replicas values).
+  void order_sums_to(double* out) {
+    block_sums(terms.data(), 2 * replicas);
+    add_blocks_kernel<<<blocks_for(static_cast<std::size_t>(replicas), 128), 128>>>(
+        partial.data(), sum_blocks(), 2 * replicas, 0, 2, replicas, out);
+    check_launch("add blocks kernel");
+  }
+
+  // Column sums of rows x width values in OrderedColumnSums' order.
+  std::vector<double> ordered_sums(const double* values, int width) {
+    const std::int64_t blocks = sum_blocks();
+    const auto n = static_cast<std::size_t>(blocks * width);
+    block_sums(values, width);
     std::vector<double> host(n);
     partial.download(host.data(), n);
     std::vector<double> out(static_cast<std::size_t>(width), 0.0);
@@ -411,7 +441,8 @@ void SparseEnsemble::set_coupling(const std::vector<double>& K) {
   m_impl->K.upload(K.data(), K.size());
 }
 
-void SparseEnsemble::advance(const SplittingCoefficients& splitting, double h, std::int64_t steps) {
+void SparseEnsemble::advance(const SplittingCoefficients& splitting, double h, std::int64_t steps,
+                             std::vector<double>* order) {
   const auto& b = splitting.kicks;
   const auto& a = splitting.drifts;
   if (a.empty() || b.size() != a.size() + 1) {
@@ -419,6 +450,10 @@ void SparseEnsemble::advance(const SplittingCoefficients& splitting, double h, s
   }
   Impl& e = *m_impl;
   if (steps <= 0) return;
+  const auto w = static_cast<std::size_t>(e.replicas);
+  if (order != nullptr && e.order_steps.size() < static_cast<std::size_t>(steps) * w) {
+    e.order_steps.allocate(static_cast<std::size_t>(steps) * w);
+  }
   for (std::int64_t step = 0; step < steps; ++step) {
     for (std::size_t i = 0; i < a.size(); ++i) {
       const StageArgs s{
@@ -430,23 +465,36 @@ void SparseEnsemble::advance(const SplittingCoefficients& splitting, double h, s
           e.cs.data(),        e.precision == DevicePrecision::float32 ? e.cs32.data() : nullptr};
       stage_kernel<<<e.cell_blocks(), e.tpb()>>>(s);
       check_launch("stage kernel");
-      e.evaluate(false);
+      // The step's last evaluation gives the step's order sums (the state's, up to the final
+      // kick, which changes no angle): the terms are formed there when the caller asks.
+      const bool last = i + 1 == a.size();
+      e.evaluate(last && order != nullptr);
+      if (last && order != nullptr) {
+        e.order_sums_to(e.order_steps.data() + static_cast<std::size_t>(step) * w);
+      }
     }
   }
   kick_kernel<<<e.cell_blocks(), e.tpb()>>>(e.p.data(), e.g.data(), e.K.data(), e.replicas,
                                             e.cells(), b.back() * h);
   check_launch("kick kernel");
+  if (order != nullptr) {
+    const std::size_t first = order->size();
+    order->resize(first + static_cast<std::size_t>(steps) * w);
+    e.order_steps.download(order->data() + first, static_cast<std::size_t>(steps) * w);
+  }
 }
 
 EnsembleSums SparseEnsemble::sums() {
   Impl& e = *m_impl;
   e.evaluate(true);
-  kinetic_kernel<<<e.cell_blocks(), e.tpb()>>>(e.p.data(), e.cells(), e.scratch.data());
+  kinetic_kernel<<<e.cell_blocks(), e.tpb()>>>(e.p.data(), e.cells(), e.scratch.data(),
+                                               e.magnitude.data());
   check_launch("kinetic kernel");
   const std::vector<double> terms = e.ordered_sums(e.terms.data(), 2 * e.replicas);
   EnsembleSums s;
   s.kinetic = e.ordered_sums(e.scratch.data(), e.replicas);
   s.momentum = e.ordered_sums(e.p.data(), e.replicas);
+  s.momentum_scale = e.ordered_sums(e.magnitude.data(), e.replicas);
   for (int b = 0; b < e.replicas; ++b) {
     s.order.push_back(terms[static_cast<std::size_t>(2 * b)]);
     s.coupling.push_back(terms[static_cast<std::size_t>(2 * b + 1)]);

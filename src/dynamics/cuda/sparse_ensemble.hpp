@@ -28,11 +28,11 @@ struct HostCsr {
 };
 
 /// Per replica, the sums the observables need (coupling_force.hpp): sum_n |y_n| (R = that /
-/// sum_n d_n), sum_n Re(e^{-i theta_n} y_n) (potential -K / (2N) that), sum_n p_n and
-/// sum_n p_n^2 / 2 (kinetic). Each column summed in OrderedColumnSums' order (blocks of 2048
-/// rows in order, then the blocks in order).
+/// sum_n d_n), sum_n Re(e^{-i theta_n} y_n) (potential -K / (2N) that), sum_n p_n,
+/// sum_n p_n^2 / 2 (kinetic) and sum_n |p_n| (the momentum drift's scale). Each column summed in
+/// OrderedColumnSums' order (blocks of 2048 rows in order, then the blocks in order).
 struct EnsembleSums {
-  std::vector<double> order, coupling, momentum, kinetic;
+  std::vector<double> order, coupling, momentum, kinetic, momentum_scale;
 };
 
 /// Device memory in bytes: what a SparseEnsemble of this size allocates, and what the device
@@ -78,7 +78,11 @@ class SparseEnsemble {
   void set_coupling(const std::vector<double>& K);
   /// `steps` steps of h with the splitting's table (kicks.size() == drifts.size() + 1), each
   /// evaluation once per drift, the last kick's force kept for the next step as on the CPU.
-  void advance(const SplittingCoefficients& splitting, double h, std::int64_t steps);
+  /// With `order` not null, each step's sum_n |y_n| per replica (the CPU force's order sums
+  /// after that step: ensemble_stepper.hpp) is appended to it, steps x replicas values, summed
+  /// on the device and copied once at the end.
+  void advance(const SplittingCoefficients& splitting, double h, std::int64_t steps,
+               std::vector<double>* order = nullptr);
   /// The sums at the current state.
   EnsembleSums sums();
   /// Waits for the device and reports the first error of its queue.

@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# Packs the `hmfnet` CLI built here for the GPU machine, which has no Trilinos, HDF5 or Open MPI:
+# the executable, the shared libraries it loads (ldd, less glibc's and the NVIDIA driver's, which
+# the GPU machine has), and Open MPI's plugins and help files under a relocated prefix
+# (OPAL_PREFIX), so that `hmfnet simulate --device cuda` runs there as one MPI singleton.
+#
+#   bash ci/device_pack_cli.sh BUILD/bin/hmfnet OUT.tar.xz
+#
+# Unpacked into D, it runs as `D/run hmfnet ARGS...` (the wrapper sets the environment).
+set -euo pipefail
+exe=$1 pack=$2
+die() { echo "device_pack_cli: $*" >&2; exit 1; }
+[ -x "$exe" ] || die "no executable $exe"
+stage=$(mktemp -d)
+trap 'rm -rf "$stage"' EXIT
+mkdir -p "$stage/bin" "$stage/lib"
+cp "$exe" "$stage/bin/"
+
+# The C library, its loader and the driver's libraries stay the GPU machine's own.
+system_lib='^(libc|libm|libdl|librt|libpthread|libresolv|libutil|ld-linux-x86-64|linux-vdso|libcuda|libnvidia)[.-]'
+copy_deps() {
+  ldd "$1" | awk '$2 == "=>" && $3 ~ /^\// { print $3 }' | while read -r lib; do
+    name=$(basename "$lib")
+    [[ "$name" =~ $system_lib ]] && continue
+    [ -e "$stage/lib/$name" ] || cp -L "$lib" "$stage/lib/$name"
+  done
+}
+copy_deps "$exe"
+
+# Open MPI (Debian: prefix /usr, libdir lib/x86_64-linux-gnu/openmpi/lib): its plugins are
+# opened at run time from the prefix, which OPAL_PREFIX relocates. Plugins whose own libraries
+# are absent there (InfiniBand, UCX) fail to load quietly; a singleton needs none of them.
+libmpi=$(ldd "$exe" | awk '$1 == "libmpi.so.40" { print $3 }')
+[ -n "$libmpi" ] || die "$exe does not link libmpi.so.40 (Open MPI 4): nothing else is packed"
+ompi_lib=$(dirname "$(readlink -f "$libmpi")")
+multiarch=$(basename "$ompi_lib")                         # x86_64-linux-gnu
+plugins=/usr/lib/$multiarch/openmpi/lib/openmpi3
+[ -d "$plugins" ] || die "no Open MPI plugin folder $plugins"
+prefix="$stage/prefix"
+mkdir -p "$prefix/lib/$multiarch/openmpi/lib" "$prefix/share" "$prefix/etc"
+cp -a "$plugins" "$prefix/lib/$multiarch/openmpi/lib/"
+for p in "$plugins"/mca_*.so; do
+  case $(basename "$p") in mca_pml_ob1.so | mca_btl_self.so | mca_btl_vader.so) copy_deps "$p" ;; esac
+done
+[ -d /usr/share/openmpi ] && cp -a /usr/share/openmpi "$prefix/share/"
+
+cat >"$stage/run" <<'SH'
+#!/usr/bin/env bash
+# D/run PROGRAM ARGS...: runs D/bin/PROGRAM with D's libraries and D's relocated Open MPI, as an
+# isolated singleton (no mpirun, no daemon, messages only to itself).
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+program=$1
+shift
+export LD_LIBRARY_PATH="$here/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+export OPAL_PREFIX="$here/prefix"
+export OMPI_MCA_ess_singleton_isolated=1
+export OMPI_MCA_mca_base_component_show_load_errors=0
+export OMPI_MCA_pml=ob1 OMPI_MCA_btl=self
+export OMPI_MCA_rmaps_base_oversubscribe=1
+exec "$here/bin/$program" "$@"
+SH
+chmod +x "$stage/run"
+tar -C "$stage" -cJf "$pack" .
+echo "packed $(du -sh "$pack" | cut -f1): $(find "$stage/lib" -type f | wc -l) libraries, $(find "$prefix" -name 'mca_*.so' | wc -l) Open MPI plugins -> $pack"

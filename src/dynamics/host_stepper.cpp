@@ -1,0 +1,40 @@
+#include "dynamics/host_stepper.hpp"
+
+#include <cmath>
+
+#include "dynamics/ordered_sum.hpp"
+
+namespace hmfnet {
+
+void HostStepper::set_state(const RotorState& state) {
+  m_state = state;
+  m_f.update(m_state);
+}
+
+void HostStepper::advance(const Integrator& method, double h, const std::vector<double>& K,
+                          std::int64_t steps, std::vector<double>* order) {
+  for (std::int64_t i = 0; i < steps; ++i) {
+    method.step(m_state, h, K, m_f);
+    if (order != nullptr)
+      order->insert(order->end(), m_f.sums().order.begin(), m_f.sums().order.end());
+  }
+}
+
+StepperSums HostStepper::sums() {
+  const auto rows = static_cast<std::size_t>(m_state.rows);
+  const int width = m_state.replicas;
+  std::vector<double> p2(m_state.p.size()), absp(m_state.p.size());
+  for (std::size_t k = 0; k < p2.size(); ++k) {
+    p2[k] = 0.5 * m_state.p[k] * m_state.p[k];
+    absp[k] = std::abs(m_state.p[k]);
+  }
+  StepperSums s;
+  s.order = m_f.sums().order;
+  s.coupling = m_f.sums().coupling;
+  ordered_column_sums(p2, rows, width, s.kinetic);
+  ordered_column_sums(m_state.p, rows, width, s.momentum);
+  ordered_column_sums(absp, rows, width, s.momentum_scale);
+  return s;
+}
+
+}  // namespace hmfnet
