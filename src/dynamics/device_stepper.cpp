@@ -4,11 +4,13 @@
 
 #include "core/error.hpp"
 #include "dynamics/network_force.hpp"
+#include "dynamics/rank_one_force.hpp"
 #include "dynamics/splitting_coefficients.hpp"
 #include "parallel/parallel_session.hpp"
 
 #if defined(HMFNET_HAVE_CUDA)
 #include "dynamics/cuda/device.hpp"
+#include "dynamics/cuda/rank_one_ensemble.hpp"
 #include "dynamics/cuda/sparse_ensemble.hpp"
 #endif
 
@@ -22,11 +24,11 @@ namespace {
 
 // The first thing of `network` with `force` that the device does not take.
 void check_network(const DistributedNetwork& network, const CouplingForce& force) {
+  if (dynamic_cast<const RankOneForce*>(&force) != nullptr) return;
   if (dynamic_cast<const NetworkForce*>(&force) == nullptr) {
-    refuse(std::string("the ") + force.name() +
-           " force (the complete graph) is not on the device yet");
+    refuse(std::string("the ") + force.name() + " force is not on the device");
   }
-  if (network.weighted()) refuse("weighted networks are not on the device yet");
+  if (network.weighted()) refuse("weighted sparse networks are not on the device yet");
 }
 
 }  // namespace
@@ -51,9 +53,11 @@ void require_device_for(const SimulationParameters& params) {
 
 namespace {
 
-class SparseDeviceStepper : public EnsembleStepper {
+// Over cuda::SparseEnsemble or cuda::RankOneEnsemble (the same interface).
+template <class Ensemble>
+class DeviceStepper : public EnsembleStepper {
  public:
-  SparseDeviceStepper(cuda::SparseEnsemble ensemble, CouplingForce& force)
+  DeviceStepper(Ensemble ensemble, CouplingForce& force)
       : m_ensemble(std::move(ensemble)), m_force(force), m_device(cuda::device_description()) {}
 
   void set_state(const RotorState& state) override {
@@ -99,7 +103,7 @@ class SparseDeviceStepper : public EnsembleStepper {
   std::string device() const override { return m_device; }
 
  private:
-  cuda::SparseEnsemble m_ensemble;
+  Ensemble m_ensemble;
   CouplingForce& m_force;
   std::string m_device;
   RotorState m_state;  // the host's copy: rows, replicas, first row; theta and p when current
@@ -133,14 +137,20 @@ std::unique_ptr<EnsembleStepper> make_device_stepper(const DistributedNetwork& n
                                                      const SimulationParameters& params) {
   require_device_for(params);
   check_network(network, force);
-  if (!network.columns_are_owned_rows()) refuse("the network's columns are not its rows");
   if (network.local_size() > INT32_MAX) refuse("more than 2^31 - 1 rows");
+  const int replicas = static_cast<int>(lanes(params));
+  if (const auto* rank_one = dynamic_cast<const RankOneForce*>(&force)) {
+    const RankOneStructure& s = rank_one->structure();
+    return std::make_unique<DeviceStepper<cuda::RankOneEnsemble>>(
+        cuda::RankOneEnsemble(s.a, s.diagonal, replicas), force);
+  }
+  if (!network.columns_are_owned_rows()) refuse("the network's columns are not its rows");
   const auto& sparse = dynamic_cast<const NetworkForce&>(force);
   const cuda::DevicePrecision precision = sparse.precision() == ForcePrecision::float64
                                               ? cuda::DevicePrecision::float64
                                               : cuda::DevicePrecision::float32;
-  cuda::SparseEnsemble ensemble(host_csr(network), static_cast<int>(lanes(params)), precision);
-  return std::make_unique<SparseDeviceStepper>(std::move(ensemble), force);
+  return std::make_unique<DeviceStepper<cuda::SparseEnsemble>>(
+      cuda::SparseEnsemble(host_csr(network), replicas, precision), force);
 }
 
 #else

@@ -1,15 +1,15 @@
 #pragma once
 // The CUDA device's stepper (ensemble_stepper.hpp) behind `hmfnet simulate --device cuda`: the
-// sparse force on the network's rows with every replica's state on the device
-// (cuda::SparseEnsemble), the CPU's per-cell arithmetic (kernel_arithmetic.hpp) and summation
-// order, so a run's output is the CPU's bit for bit and a checkpoint written by either resumes
-// on the other. The host holds the schedule, the batch means and the records; per chunk of
-// steps it reads back only each step's order sums.
+// sparse force on the network's rows (cuda::SparseEnsemble) or the rank-one force of the
+// complete graph and of A = a a^T (cuda::RankOneEnsemble), every replica's state on the device,
+// the CPU's per-cell arithmetic (kernel_arithmetic.hpp) and summation order, so a run's output
+// is the CPU's bit for bit and a checkpoint written by either resumes on the other. The host holds
+// the schedule, the batch means and the records; per chunk of steps it reads back only each step's
+// order sums.
 //
 // Not on the device (each refused by make_device_stepper in one line, before any file is
-// written): more than one MPI rank, weighted networks, the rank-one force (the complete graph
-// has its own device stepper, cuda::CompleteGraphEnsembles, not yet behind this seam), node
-// data, and methods that are no kick-drift splitting (rk4).
+// written): more than one MPI rank, weighted sparse networks, node data, and methods that are
+// no kick-drift splitting (rk4).
 #include <memory>
 #include <string>
 

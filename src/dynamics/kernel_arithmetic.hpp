@@ -221,6 +221,18 @@ HMFNET_HD inline double coupling_force(double inverse_n, double c, double s, Loc
   return inverse_n * (c * y.im - s * y.re);
 }
 
+/// y_n = a_n Z - [no diagonal] a_n^2 e^{i theta_n} of a rank-one coupling A = a a^T
+/// (rank_one_force.hpp), with Z = sum_m a_m e^{i theta_m} and c, s the row's own [cos, sin].
+HMFNET_HD inline LocalField rank_one_field(double a, double z_re, double z_im, double c, double s,
+                                           bool diagonal) {
+  LocalField y{a * z_re, a * z_im};
+  if (!diagonal) {
+    y.re -= a * a * c;
+    y.im -= a * a * s;
+  }
+  return y;
+}
+
 /// |y_n|, the row's term of sum_n |y_n| (the order parameter R).
 HMFNET_HD inline double order_term(LocalField y) { return std::sqrt(y.re * y.re + y.im * y.im); }
 

@@ -8,6 +8,7 @@
 #include <emmintrin.h>
 #endif
 
+#include "dynamics/kernel_arithmetic.hpp"
 #include "dynamics/ordered_sum.hpp"
 #include "dynamics/sincos.hpp"
 #include "dynamics/team.hpp"
@@ -143,16 +144,13 @@ struct FieldArgs {
 };
 
 // y_n = a_n Z - [no diagonal] a_n^2 e^{i theta_n} of cell k (replica b); the one formula for
-// the force below and for local_fields().
+// the force below, for local_fields() and for the device (kernel_arithmetic.hpp).
 inline void field(const FieldArgs& f, double a, std::size_t k, std::size_t b, double& yc,
                   double& ys) {
-  const double c = f.cs[2 * k], s = f.cs[2 * k + 1];
-  yc = a * f.z[2 * b];
-  ys = a * f.z[2 * b + 1];
-  if (!f.diagonal) {
-    yc -= a * a * c;
-    ys -= a * a * s;
-  }
+  const LocalField y =
+      rank_one_field(a, f.z[2 * b], f.z[2 * b + 1], f.cs[2 * k], f.cs[2 * k + 1], f.diagonal);
+  yc = y.re;
+  ys = y.im;
 }
 
 // g_n of cell k (replica b), with the cell's terms of the order and coupling sums, |y_n| and

@@ -44,6 +44,7 @@ class RankOneForce : public CouplingForce {
   EdgeOffset gathers_per_evaluation() const override { return 0; }  // rows only: thread_choice
   std::int64_t row_work() const override { return k_rank_one_row_work; }
   const char* name() const override { return "rank-one"; }
+  const RankOneStructure& structure() const { return m_structure; }
   /// Formed from the last evaluation on first call after it (outside a team: not thread-safe).
   const std::vector<double>& local_fields() const override;
 

@@ -343,22 +343,31 @@ TEST_CASE(
       CHECK(bit_difference(host.p, cpu.p).count == 0);
     }
   }
-  // K_N with self-loops: RankOneForce's Z in 2048-row blocks (N = 5000: three blocks).
-  const CompleteGraph graph = CompleteGraph::make(5000, true);
-  const DistributedNetwork complete(graph);
-  RankOneForce rank_one(complete_graph_structure(graph), complete.first_row(),
-                        complete.local_size());
-  ForceEvaluation f(rank_one);
-  RotorState cpu = initial_state(complete.first_row(), complete.local_size(), ic);
-  f.update(cpu);
-  auto host = gpu_test::HostEnsemble::complete(5000, 3);
-  host.K = K;
-  host.set_state(cpu.theta, cpu.p);
-  const LeapFrog leapfrog;
-  for (int step = 0; step < 25; ++step) leapfrog.step(cpu, 0.1, K, f);
-  host.advance(leap_frog_coefficients(), 0.1, 25);
-  CHECK(bit_difference(host.theta, cpu.theta).count == 0);
-  CHECK(bit_difference(host.p, cpu.p).count == 0);
+  // K_N with and without self-loops: RankOneForce's Z in 2048-row blocks (N = 5000: three
+  // blocks), and each step's order sums and a record's sums as the CPU's stepper forms them.
+  for (const bool self_loops : {true, false}) {
+    const CompleteGraph graph = CompleteGraph::make(5000, self_loops);
+    const DistributedNetwork complete(graph);
+    RankOneForce rank_one(complete_graph_structure(graph), complete.first_row(),
+                          complete.local_size());
+    HostStepper cpu(rank_one);
+    cpu.set_state(initial_state(complete.first_row(), complete.local_size(), ic));
+    auto host = gpu_test::HostEnsemble::complete(5000, 3, self_loops);
+    host.K = K;
+    host.set_state(cpu.state().theta, cpu.state().p);
+    std::vector<double> cpu_order, host_order;
+    cpu.advance(LeapFrog(), 0.1, K, 25, &cpu_order);
+    host.advance(leap_frog_coefficients(), 0.1, 25, &host_order);
+    INFO("K_N, self-loops " << self_loops);
+    CHECK(bit_difference(host.theta, cpu.state().theta).count == 0);
+    CHECK(bit_difference(host.p, cpu.state().p).count == 0);
+    CHECK(bit_difference(host_order, cpu_order).count == 0);
+    const StepperSums x = cpu.sums();
+    const cuda::EnsembleSums y = host.sums();
+    CHECK(bit_difference(y.coupling, x.coupling).count == 0);
+    CHECK(bit_difference(y.kinetic, x.kinetic).count == 0);
+    CHECK(bit_difference(y.momentum_scale, x.momentum_scale).count == 0);
+  }
 }
 
 TEST_CASE(

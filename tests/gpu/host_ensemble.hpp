@@ -60,8 +60,9 @@ inline void waterbag(std::int64_t n, int replicas, double sigma0, std::uint64_t 
   }
 }
 
-/// The host stepper. complete = true: K_N with self-loops (y_n = Z, summed in
-/// OrderedColumnSums' 2048-row blocks); otherwise the network's rows in T.
+/// The host stepper. complete(): K_N with or without self-loops (y_n = Z - [no self-loops]
+/// e^{i theta_n}, Z summed in OrderedColumnSums' 2048-row blocks: rank_one_force.cpp with a = 1);
+/// otherwise the network's rows in T.
 class HostEnsemble {
  public:
   HostEnsemble(cuda::HostCsr network, int replicas, bool float32)
@@ -70,9 +71,10 @@ class HostEnsemble {
         m_b(replicas),
         m_w(static_cast<std::size_t>(replicas)),
         m_float32(float32) {}
-  static HostEnsemble complete(std::int64_t n, int replicas) {
+  static HostEnsemble complete(std::int64_t n, int replicas, bool self_loops = true) {
     HostEnsemble e(cuda::HostCsr{n, {}, {}}, replicas, false);
     e.m_complete = true;
+    e.m_self_loops = self_loops;
     return e;
   }
 
@@ -189,8 +191,8 @@ class HostEnsemble {
     }
   }
 
-  // rank_one_force.cpp with a = 1 and the diagonal: Z by 2048-row blocks, each from 0 in order,
-  // the blocks in order from 0 (OrderedColumnSums), then y_n = Z.
+  // rank_one_force.cpp with a = 1: Z by 2048-row blocks, each from 0 in order, the blocks in
+  // order from 0 (OrderedColumnSums), then y_n = Z - [no self-loops] e^{i theta_n}.
   void complete_fields() {
     m_z.assign(2 * m_w, 0.0);
     for (std::int64_t first = 0; first < m_n; first += 2048) {
@@ -206,7 +208,8 @@ class HostEnsemble {
     }
     for (std::size_t k = 0; k < cells(); ++k) {
       const std::size_t b = k % m_w;
-      m_y[k] = LocalField{m_z[2 * b], m_z[2 * b + 1]};
+      m_y[k] = rank_one_field(1.0, m_z[2 * b], m_z[2 * b + 1], m_cs[2 * k], m_cs[2 * k + 1],
+                              m_self_loops);
       m_g[k] = coupling_force(1.0 / static_cast<double>(m_n), m_cs[2 * k], m_cs[2 * k + 1], m_y[k]);
     }
   }
@@ -217,6 +220,7 @@ class HostEnsemble {
   std::size_t m_w;
   bool m_float32;
   bool m_complete = false;
+  bool m_self_loops = true;
   std::vector<double> m_cs, m_g, m_z;
   std::vector<float> m_cs32;
   std::vector<LocalField> m_y;

@@ -1,0 +1,104 @@
+// The device's rank-one step (rank_one_ensemble.hpp) against the CPU's (host_ensemble.hpp:
+// rank_one_force.cpp's arithmetic in its order), K_N with and without self-loops: the state bit
+// for bit over 100 leap-frog steps and 30 of yoshida4, a K per replica; each step's order sums
+// and a record's five sums bit for bit across chunks; the same bits for 64, 256 and 1024
+// threads per block and run to run.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "dynamics/cuda/rank_one_ensemble.hpp"
+#include "host_ensemble.hpp"
+
+using namespace hmfnet;
+using hmfnet::gpu_test::HostEnsemble;
+
+namespace {
+
+// N = 5000: three of the 2048-row blocks Z is summed by.
+constexpr std::int64_t k_n = 5000;
+constexpr int k_replicas = 3;
+
+std::size_t differing(const std::vector<double>& a, const std::vector<double>& b) {
+  if (a.size() != b.size()) return a.size() + b.size();
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    if (std::memcmp(&a[k], &b[k], sizeof(double)) != 0 && !(std::isnan(a[k]) && std::isnan(b[k])))
+      ++n;
+  }
+  return n;
+}
+
+struct Run {
+  std::vector<double> theta, p, order;
+  cuda::EnsembleSums sums;
+};
+
+const std::vector<double>& couplings() {
+  static const std::vector<double> K = {1.0, 2.5, 6.0};
+  return K;
+}
+
+// `steps` steps of `c` in the given chunks (the order sums of every step), on the device.
+Run device_run(bool self_loops, int threads, const SplittingCoefficients& c, double h,
+               const std::vector<std::int64_t>& chunks) {
+  std::vector<double> theta, p;
+  gpu_test::waterbag(k_n, k_replicas, 0.6, 21, theta, p);
+  cuda::RankOneEnsemble e(std::vector<double>(k_n, 1.0), self_loops, k_replicas, threads);
+  e.set_coupling(couplings());
+  e.set_state(theta, p);
+  Run r;
+  for (const std::int64_t chunk : chunks) e.advance(c, h, chunk, &r.order);
+  e.get_state(r.theta, r.p);
+  r.sums = e.sums();
+  return r;
+}
+
+Run host_run(bool self_loops, const SplittingCoefficients& c, double h, std::int64_t steps) {
+  std::vector<double> theta, p;
+  gpu_test::waterbag(k_n, k_replicas, 0.6, 21, theta, p);
+  auto host = HostEnsemble::complete(k_n, k_replicas, self_loops);
+  host.K = couplings();
+  host.set_state(theta, p);
+  Run r;
+  host.advance(c, h, steps, &r.order);
+  r.theta = host.theta;
+  r.p = host.p;
+  r.sums = host.sums();
+  return r;
+}
+
+void require_same(const Run& a, const Run& b) {
+  CHECK(differing(a.theta, b.theta) == 0);
+  CHECK(differing(a.p, b.p) == 0);
+  CHECK(differing(a.order, b.order) == 0);
+  CHECK(differing(a.sums.order, b.sums.order) == 0);
+  CHECK(differing(a.sums.coupling, b.sums.coupling) == 0);
+  CHECK(differing(a.sums.kinetic, b.sums.kinetic) == 0);
+  CHECK(differing(a.sums.momentum, b.sums.momentum) == 0);
+  CHECK(differing(a.sums.momentum_scale, b.sums.momentum_scale) == 0);
+}
+
+}  // namespace
+
+TEST_CASE("the rank-one device step is the CPU's bits: K_N with and without self-loops",
+          "[gpu][rank_one]") {
+  for (const bool self_loops : {true, false}) {
+    INFO("self-loops " << self_loops);
+    require_same(device_run(self_loops, 256, leap_frog_coefficients(), 0.1, {1, 40, 59}),
+                 host_run(self_loops, leap_frog_coefficients(), 0.1, 100));
+    require_same(device_run(self_loops, 256, yoshida4_coefficients(), 0.1, {30}),
+                 host_run(self_loops, yoshida4_coefficients(), 0.1, 30));
+  }
+}
+
+TEST_CASE("the rank-one device step: the same bits for 64, 256 and 1024 threads and run to run",
+          "[gpu][rank_one]") {
+  const Run first = device_run(false, 256, yoshida4_coefficients(), 0.05, {50});
+  for (const int threads : {256, 64, 1024}) {
+    INFO(threads << " threads per block");
+    require_same(device_run(false, threads, yoshida4_coefficients(), 0.05, {50}), first);
+  }
+}
