@@ -53,22 +53,21 @@ void require_device_for(const SimulationParameters& params) {
 
 namespace {
 
-// Over cuda::SparseEnsemble or cuda::RankOneEnsemble (the same interface).
-template <class Ensemble>
+// Over cuda::SparseEnsemble or cuda::RankOneEnsemble.
 class DeviceStepper : public EnsembleStepper {
  public:
-  DeviceStepper(Ensemble ensemble, CouplingForce& force)
+  DeviceStepper(std::unique_ptr<cuda::DeviceEnsemble> ensemble, CouplingForce& force)
       : m_ensemble(std::move(ensemble)), m_force(force), m_device(cuda::device_description()) {}
 
   void set_state(const RotorState& state) override {
     m_state = state;
-    m_ensemble.set_state(m_state.theta, m_state.p);
+    m_ensemble->set_state(m_state.theta, m_state.p);
     m_state_current = true;
     ++m_evaluations;
   }
 
   const RotorState& state() override {
-    if (!m_state_current) m_ensemble.get_state(m_state.theta, m_state.p);
+    if (!m_state_current) m_ensemble->get_state(m_state.theta, m_state.p);
     m_state_current = true;
     return m_state;
   }
@@ -78,16 +77,16 @@ class DeviceStepper : public EnsembleStepper {
     const std::optional<SplittingCoefficients> table = splitting_coefficients(method.name());
     if (!table) refuse("the integrator " + method.name() + " is no kick-drift splitting");
     if (K != m_K) {
-      m_ensemble.set_coupling(K);
+      m_ensemble->set_coupling(K);
       m_K = K;
     }
-    m_ensemble.advance(*table, h, steps, order);
+    m_ensemble->advance(*table, h, steps, order);
     m_state_current = false;
     m_evaluations += steps * static_cast<long long>(table->drifts.size());
   }
 
   StepperSums sums() override {
-    cuda::EnsembleSums s = m_ensemble.sums();
+    cuda::EnsembleSums s = m_ensemble->sums();
     return {std::move(s.order), std::move(s.coupling), std::move(s.kinetic), std::move(s.momentum),
             std::move(s.momentum_scale)};
   }
@@ -103,7 +102,7 @@ class DeviceStepper : public EnsembleStepper {
   std::string device() const override { return m_device; }
 
  private:
-  Ensemble m_ensemble;
+  std::unique_ptr<cuda::DeviceEnsemble> m_ensemble;
   CouplingForce& m_force;
   std::string m_device;
   RotorState m_state;  // the host's copy: rows, replicas, first row; theta and p when current
@@ -141,16 +140,16 @@ std::unique_ptr<EnsembleStepper> make_device_stepper(const DistributedNetwork& n
   const int replicas = static_cast<int>(lanes(params));
   if (const auto* rank_one = dynamic_cast<const RankOneForce*>(&force)) {
     const RankOneStructure& s = rank_one->structure();
-    return std::make_unique<DeviceStepper<cuda::RankOneEnsemble>>(
-        cuda::RankOneEnsemble(s.a, s.diagonal, replicas), force);
+    return std::make_unique<DeviceStepper>(
+        std::make_unique<cuda::RankOneEnsemble>(s.a, s.diagonal, replicas), force);
   }
   if (!network.columns_are_owned_rows()) refuse("the network's columns are not its rows");
   const auto& sparse = dynamic_cast<const NetworkForce&>(force);
   const cuda::DevicePrecision precision = sparse.precision() == ForcePrecision::float64
                                               ? cuda::DevicePrecision::float64
                                               : cuda::DevicePrecision::float32;
-  return std::make_unique<DeviceStepper<cuda::SparseEnsemble>>(
-      cuda::SparseEnsemble(host_csr(network), replicas, precision), force);
+  return std::make_unique<DeviceStepper>(
+      std::make_unique<cuda::SparseEnsemble>(host_csr(network), replicas, precision), force);
 }
 
 #else

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -17,6 +18,17 @@
 #include "dynamics/splitting_coefficients.hpp"
 
 namespace hmfnet::gpu_test {
+
+/// Values whose bits differ (NaN only as NaN); a.size() + b.size() when the sizes differ.
+inline std::size_t differing(const std::vector<double>& a, const std::vector<double>& b) {
+  if (a.size() != b.size()) return a.size() + b.size();
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    if (std::memcmp(&a[k], &b[k], sizeof(double)) != 0 && !(std::isnan(a[k]) && std::isnan(b[k])))
+      ++n;
+  }
+  return n;
+}
 
 /// An undirected random network: each pair an edge with probability degree / (n - 1), no
 /// self-loops, rows sorted (a CSR as the CPU stores it).

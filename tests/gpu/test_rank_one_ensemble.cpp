@@ -13,6 +13,7 @@
 #include "host_ensemble.hpp"
 
 using namespace hmfnet;
+using hmfnet::gpu_test::differing;
 using hmfnet::gpu_test::HostEnsemble;
 
 namespace {
@@ -20,16 +21,6 @@ namespace {
 // N = 5000: three of the 2048-row blocks Z is summed by.
 constexpr std::int64_t k_n = 5000;
 constexpr int k_replicas = 3;
-
-std::size_t differing(const std::vector<double>& a, const std::vector<double>& b) {
-  if (a.size() != b.size()) return a.size() + b.size();
-  std::size_t n = 0;
-  for (std::size_t k = 0; k < a.size(); ++k) {
-    if (std::memcmp(&a[k], &b[k], sizeof(double)) != 0 && !(std::isnan(a[k]) && std::isnan(b[k])))
-      ++n;
-  }
-  return n;
-}
 
 struct Run {
   std::vector<double> theta, p, order;

@@ -17,6 +17,7 @@
 #include "host_ensemble.hpp"
 
 using namespace hmfnet;
+using hmfnet::gpu_test::differing;
 using hmfnet::gpu_test::HostEnsemble;
 
 namespace {
@@ -26,17 +27,6 @@ constexpr std::size_t k_replicas = 3;
 const cuda::HostCsr& test_network() {
   static const cuda::HostCsr net = gpu_test::random_network(1500, 12.0, 5);
   return net;
-}
-
-// Cells whose bits differ (NaN only as NaN).
-std::size_t differing(const std::vector<double>& a, const std::vector<double>& b) {
-  if (a.size() != b.size()) return a.size() + b.size();
-  std::size_t n = 0;
-  for (std::size_t k = 0; k < a.size(); ++k) {
-    if (std::memcmp(&a[k], &b[k], sizeof(double)) != 0 && !(std::isnan(a[k]) && std::isnan(b[k])))
-      ++n;
-  }
-  return n;
 }
 
 struct Start {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "dynamics/cuda/ensemble_cells.cuh"
 #include "dynamics/kernel_arithmetic.hpp"
@@ -275,5 +276,32 @@ EnsembleSums EnsembleCells::sums() {
   }
   return s;
 }
+
+DeviceEnsemble::DeviceEnsemble(std::unique_ptr<EnsembleCells> cells) : m_cells(std::move(cells)) {}
+DeviceEnsemble::~DeviceEnsemble() = default;
+DeviceEnsemble::DeviceEnsemble(DeviceEnsemble&&) noexcept = default;
+DeviceEnsemble& DeviceEnsemble::operator=(DeviceEnsemble&&) noexcept = default;
+
+std::int64_t DeviceEnsemble::rows() const { return m_cells->rows(); }
+int DeviceEnsemble::replicas() const { return m_cells->replicas(); }
+
+void DeviceEnsemble::set_state(const std::vector<double>& theta, const std::vector<double>& p) {
+  m_cells->set_state(theta, p);
+}
+
+void DeviceEnsemble::get_state(std::vector<double>& theta, std::vector<double>& p) const {
+  m_cells->get_state(theta, p);
+}
+
+void DeviceEnsemble::set_coupling(const std::vector<double>& K) { m_cells->set_coupling(K); }
+
+void DeviceEnsemble::advance(const SplittingCoefficients& splitting, double h, std::int64_t steps,
+                             std::vector<double>* order) {
+  m_cells->advance(splitting, h, steps, order);
+}
+
+EnsembleSums DeviceEnsemble::sums() { return m_cells->sums(); }
+
+void DeviceEnsemble::synchronize() const { check(cudaDeviceSynchronize(), "device ensemble"); }
 
 }  // namespace hmfnet::cuda

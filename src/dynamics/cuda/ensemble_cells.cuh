@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "dynamics/cuda/device_buffer.cuh"
-#include "dynamics/cuda/sparse_ensemble.hpp"
+#include "dynamics/cuda/device_ensemble.hpp"
 #include "dynamics/splitting_coefficients.hpp"
 
 namespace hmfnet::cuda {
@@ -33,7 +33,7 @@ class EnsembleCells {
   void set_state(const std::vector<double>& theta, const std::vector<double>& p);
   void get_state(std::vector<double>& theta, std::vector<double>& p) const;
   void set_coupling(const std::vector<double>& K);
-  /// SparseEnsemble::advance's contract.
+  /// DeviceEnsemble::advance's contract.
   void advance(const SplittingCoefficients& splitting, double h, std::int64_t steps,
                std::vector<double>* order);
   EnsembleSums sums();

@@ -120,43 +120,25 @@ DeviceMemory RankOneEnsemble::memory(std::int64_t rows, int replicas) {
   return m;
 }
 
-RankOneEnsemble::RankOneEnsemble(const std::vector<double>& a, bool diagonal, int replicas,
-                                 int threads_per_block) {
+namespace {
+
+std::unique_ptr<RankOneEnsemble::Impl> rank_one_cells(const std::vector<double>& a, bool diagonal,
+                                                      int replicas, int threads_per_block) {
   const auto rows = static_cast<std::int64_t>(a.size());
-  auto impl = std::make_unique<Impl>(rows, replicas, diagonal, threads_per_block);
+  auto impl = std::make_unique<RankOneEnsemble::Impl>(rows, replicas, diagonal, threads_per_block);
   require_device();
-  require_memory(memory(rows, replicas).needed, "the rank-one ensemble");
+  require_memory(RankOneEnsemble::memory(rows, replicas).needed, "the rank-one ensemble");
   impl->a.upload(a.data(), a.size());
   impl->z_partial.allocate(static_cast<std::size_t>(z_blocks(rows) * 2 * replicas));
   impl->z.allocate(static_cast<std::size_t>(2 * replicas));
   impl->allocate();
-  m_impl = std::move(impl);
+  return impl;
 }
 
-RankOneEnsemble::~RankOneEnsemble() = default;
-RankOneEnsemble::RankOneEnsemble(RankOneEnsemble&&) noexcept = default;
-RankOneEnsemble& RankOneEnsemble::operator=(RankOneEnsemble&&) noexcept = default;
+}  // namespace
 
-std::int64_t RankOneEnsemble::rows() const { return m_impl->rows(); }
-int RankOneEnsemble::replicas() const { return m_impl->replicas(); }
-
-void RankOneEnsemble::set_state(const std::vector<double>& theta, const std::vector<double>& p) {
-  m_impl->set_state(theta, p);
-}
-
-void RankOneEnsemble::get_state(std::vector<double>& theta, std::vector<double>& p) const {
-  m_impl->get_state(theta, p);
-}
-
-void RankOneEnsemble::set_coupling(const std::vector<double>& K) { m_impl->set_coupling(K); }
-
-void RankOneEnsemble::advance(const SplittingCoefficients& splitting, double h, std::int64_t steps,
-                              std::vector<double>* order) {
-  m_impl->advance(splitting, h, steps, order);
-}
-
-EnsembleSums RankOneEnsemble::sums() { return m_impl->sums(); }
-
-void RankOneEnsemble::synchronize() const { check(cudaDeviceSynchronize(), "rank-one ensemble"); }
+RankOneEnsemble::RankOneEnsemble(const std::vector<double>& a, bool diagonal, int replicas,
+                                 int threads_per_block)
+    : DeviceEnsemble(rank_one_cells(a, diagonal, replicas, threads_per_block)) {}
 
 }  // namespace hmfnet::cuda

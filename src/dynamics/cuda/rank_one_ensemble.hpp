@@ -5,51 +5,30 @@
 // each from 0 in row order, one thread per block and replica, then the blocks in order), then
 // each cell's y_n = a_n Z - [no diagonal] a_n^2 e^{i theta_n}, g and the observables' terms with
 // rank_one_force.cpp's functions (kernel_arithmetic.hpp). The stages, the closing kick and the
-// sums are SparseEnsemble's (ensemble_cells.cuh), so `hmfnet simulate --device cuda` on K_N is
-// the CPU's run bit for bit. For a finite-size campaign of many small systems at once,
+// sums are every device ensemble's (device_ensemble.hpp), so `hmfnet simulate --device cuda` on K_N
+// is the CPU's run bit for bit. For a finite-size campaign of many small systems at once,
 // CompleteGraphEnsembles (one block per replica for many steps) is the faster tool.
 //
 // A plain C++ interface: no CUDA header reaches the caller.
 #include <cstdint>
-#include <memory>
 #include <vector>
 
-#include "dynamics/cuda/sparse_ensemble.hpp"
-#include "dynamics/splitting_coefficients.hpp"
+#include "dynamics/cuda/device_ensemble.hpp"
 
 namespace hmfnet::cuda {
 
-class RankOneEnsemble {
+class RankOneEnsemble : public DeviceEnsemble {
  public:
   /// `a`: the whole vector (rows = a.size()); `diagonal`: A_nn = a_n^2 stored (false: K_N
   /// without self-loops). Throws DeviceError before any allocation when the device memory does
   /// not suffice, and where no device can run this build.
   RankOneEnsemble(const std::vector<double>& a, bool diagonal, int replicas,
                   int threads_per_block = 256);
-  ~RankOneEnsemble();
-  RankOneEnsemble(RankOneEnsemble&&) noexcept;
-  RankOneEnsemble& operator=(RankOneEnsemble&&) noexcept;
-  RankOneEnsemble(const RankOneEnsemble&) = delete;
-  RankOneEnsemble& operator=(const RankOneEnsemble&) = delete;
 
   /// The device memory `rows` rotors and `replicas` lanes need, and what is free.
   static DeviceMemory memory(std::int64_t rows, int replicas);
 
-  std::int64_t rows() const;
-  int replicas() const;
-  /// SparseEnsemble's: the state rows x replicas, then the force at it.
-  void set_state(const std::vector<double>& theta, const std::vector<double>& p);
-  void get_state(std::vector<double>& theta, std::vector<double>& p) const;
-  void set_coupling(const std::vector<double>& K);
-  /// SparseEnsemble::advance's contract (each step's order sums appended when asked).
-  void advance(const SplittingCoefficients& splitting, double h, std::int64_t steps,
-               std::vector<double>* order = nullptr);
-  EnsembleSums sums();
-  void synchronize() const;
-
- private:
-  struct Impl;
-  std::unique_ptr<Impl> m_impl;
+  struct Impl;  ///< the device side (rank_one_ensemble.cu)
 };
 
 }  // namespace hmfnet::cuda

@@ -137,10 +137,14 @@ DeviceMemory SparseEnsemble::memory(std::int64_t rows, std::int64_t entries, int
   return m;
 }
 
-SparseEnsemble::SparseEnsemble(std::unique_ptr<Impl> impl) : m_impl(std::move(impl)) {}
+SparseEnsemble::SparseEnsemble(std::unique_ptr<Impl> impl) : DeviceEnsemble(std::move(impl)) {}
 
-SparseEnsemble::SparseEnsemble(const HostCsr& network, int replicas, DevicePrecision precision,
-                               int threads_per_block) {
+namespace {
+
+// The network's checks, then the device's, then the ensemble on the device.
+std::unique_ptr<SparseEnsemble::Impl> copied_network(const HostCsr& network, int replicas,
+                                                     DevicePrecision precision,
+                                                     int threads_per_block) {
   if (network.offsets.size() != static_cast<std::size_t>(network.rows + 1) ||
       network.offsets.front() != 0 ||
       network.offsets.back() != static_cast<std::int64_t>(network.columns.size())) {
@@ -157,15 +161,22 @@ SparseEnsemble::SparseEnsemble(const HostCsr& network, int replicas, DevicePreci
   }
   require_device();
   const auto entries = static_cast<std::int64_t>(network.columns.size());
-  require_memory(memory(network.rows, entries, replicas, precision).needed,
+  require_memory(SparseEnsemble::memory(network.rows, entries, replicas, precision).needed,
                  "the network's ensemble");
-  m_impl = std::make_unique<Impl>(network.rows, replicas, precision, threads_per_block);
-  Impl& e = *m_impl;
-  e.entries = entries;
-  e.offsets.upload(network.offsets.data(), network.offsets.size());
-  e.columns.upload(network.columns.data(), network.columns.size());
-  e.allocate();
+  auto e =
+      std::make_unique<SparseEnsemble::Impl>(network.rows, replicas, precision, threads_per_block);
+  e->entries = entries;
+  e->offsets.upload(network.offsets.data(), network.offsets.size());
+  e->columns.upload(network.columns.data(), network.columns.size());
+  e->allocate();
+  return e;
 }
+
+}  // namespace
+
+SparseEnsemble::SparseEnsemble(const HostCsr& network, int replicas, DevicePrecision precision,
+                               int threads_per_block)
+    : SparseEnsemble(copied_network(network, replicas, precision, threads_per_block)) {}
 
 SparseEnsemble SparseEnsemble::directed_er(std::int64_t rows, double degree, std::uint64_t seed,
                                            int replicas, DevicePrecision precision,
@@ -211,31 +222,6 @@ SparseEnsemble SparseEnsemble::directed_er(std::int64_t rows, double degree, std
   return SparseEnsemble(std::move(impl));
 }
 
-SparseEnsemble::~SparseEnsemble() = default;
-SparseEnsemble::SparseEnsemble(SparseEnsemble&&) noexcept = default;
-SparseEnsemble& SparseEnsemble::operator=(SparseEnsemble&&) noexcept = default;
-
-std::int64_t SparseEnsemble::rows() const { return m_impl->rows(); }
-std::int64_t SparseEnsemble::entries() const { return m_impl->entries; }
-int SparseEnsemble::replicas() const { return m_impl->replicas(); }
-
-void SparseEnsemble::set_state(const std::vector<double>& theta, const std::vector<double>& p) {
-  m_impl->set_state(theta, p);
-}
-
-void SparseEnsemble::get_state(std::vector<double>& theta, std::vector<double>& p) const {
-  m_impl->get_state(theta, p);
-}
-
-void SparseEnsemble::set_coupling(const std::vector<double>& K) { m_impl->set_coupling(K); }
-
-void SparseEnsemble::advance(const SplittingCoefficients& splitting, double h, std::int64_t steps,
-                             std::vector<double>* order) {
-  m_impl->advance(splitting, h, steps, order);
-}
-
-EnsembleSums SparseEnsemble::sums() { return m_impl->sums(); }
-
-void SparseEnsemble::synchronize() const { check(cudaDeviceSynchronize(), "device ensemble"); }
+std::int64_t SparseEnsemble::entries() const { return static_cast<Impl&>(cells()).entries; }
 
 }  // namespace hmfnet::cuda
