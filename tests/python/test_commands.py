@@ -89,6 +89,23 @@ def test_simulate_equals_the_cli(karate, run_cli, tmp_path):
     assert set(series) == set(b["timeseries"])
 
 
+def test_simulate_on_the_device_is_the_cpu_run_or_refused(karate):
+    # device="cuda": where a CUDA device runs it, the CPU's numbers bit for bit
+    # (dynamics/device_stepper.hpp); elsewhere a ValueError naming why, in the CLI's words.
+    net, _ = karate
+    args = dict(K_over_Kc=[2.0], T=10, transient=2, seed=5, replicas=2, integrator="yoshida4")
+    cpu = hmfnet.simulate(net, **args)
+    assert cpu["device"] == "cpu"
+    try:
+        gpu = hmfnet.simulate(net, device="cuda", **args)
+    except ValueError as e:
+        assert str(e).startswith("--device cuda: ") and "run it with --device cpu" in str(e)
+        return
+    assert gpu["device"] != "cpu"
+    np.testing.assert_array_equal(gpu["R_mean_replicas"], cpu["R_mean_replicas"])
+    np.testing.assert_array_equal(gpu["timeseries"]["energy"], cpu["timeseries"]["energy"])
+
+
 def test_read_run_round_trips_the_cli_file(karate, run_cli, tmp_path):
     _, path = karate
     out = tmp_path / "run.h5"
