@@ -11,7 +11,10 @@
 //   sincos:   cells / the measured sincos rate,
 //   launches: 2 x the time of an empty kernel launched back to back,
 // and of a complete-graph row: cells / (sincos rate x min(1, replicas / multiprocessors))
-// (one block per replica: a replica uses one multiprocessor).
+// (one block per replica: a replica uses one multiprocessor). The rank-one rows are the stepper
+// of `simulate --device cuda` on K_N (rank_one_ensemble.hpp: the CPU's bits), with each step's
+// order sums as a run's time average asks; their bound is the largest of the cells' stream
+// (~12 doubles a cell and step), the sincos and 6 launches a step.
 //
 //   hmfnet_gpu_ensemble_rates [--quick] [--out FILE.csv]
 // Prints the table; --out also writes it as CSV. Exit 77 where no device can run this build.
@@ -28,6 +31,7 @@
 #include "dynamics/cuda/complete_graph_ensembles.hpp"
 #include "dynamics/cuda/device.hpp"
 #include "dynamics/cuda/device_bounds.hpp"
+#include "dynamics/cuda/rank_one_ensemble.hpp"
 #include "dynamics/cuda/sparse_ensemble.hpp"
 
 using namespace hmfnet;
@@ -142,6 +146,37 @@ Row complete_row(const Ceilings& c, std::int64_t n, int replicas, std::int64_t s
   return r;
 }
 
+Row rank_one_row(const Ceilings& c, std::int64_t n, int replicas, std::int64_t steps) {
+  cuda::RankOneEnsemble e(std::vector<double>(static_cast<std::size_t>(n), 1.0), false, replicas);
+  const auto cells = static_cast<std::size_t>(n) * static_cast<std::size_t>(replicas);
+  std::vector<double> theta, p, order;
+  random_state(cells, theta, p);
+  e.set_state(theta, p);
+  const auto lf = leap_frog_coefficients();
+  const double s = best_seconds([&] {
+    order.clear();
+    e.advance(lf, 0.1, steps, &order);
+    e.synchronize();
+  });
+  Row r;
+  r.kind = "rank-one (sim)";
+  r.precision = "float64";
+  r.n = n;
+  r.replicas = replicas;
+  r.rate = static_cast<double>(cells) * static_cast<double>(steps) / s;
+  r.step_us = s / static_cast<double>(steps) * 1e6;
+  r.memory_mb = static_cast<double>(cuda::RankOneEnsemble::memory(n, replicas).needed) / 1e6;
+  // Stage: theta, p, g read, theta, p, [cos, sin] written (8 doubles); Z: [cos, sin] read (2);
+  // field: [cos, sin] read, g and the two terms written (5); the terms' block sums (2).
+  const double t_stream = static_cast<double>(cells) * 17.0 * 8.0 / c.copy;
+  const double t_sincos = static_cast<double>(cells) / c.sincos;
+  const double t_launch = 6.0 * c.launch;
+  const double t = std::max({t_stream, t_sincos, t_launch});
+  r.bound = static_cast<double>(cells) / t;
+  r.limit = t == t_stream ? "stream" : t == t_sincos ? "sincos" : "launches";
+  return r;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -194,6 +229,9 @@ int main(int argc, char** argv) {
     rows.push_back(complete_row(c, 100000, 16, 2000 / scale));
     rows.push_back(complete_row(c, 20000, 64, 10000 / scale));
     rows.push_back(complete_row(c, 64, 64, 20000 / scale));
+    rows.push_back(rank_one_row(c, 100000, 16, 2000 / scale));
+    rows.push_back(rank_one_row(c, 20000, 64, 2000 / scale));
+    rows.push_back(rank_one_row(c, 1000, 32, 2000 / scale));
     std::printf("\n%-16s %-8s %9s %3s %12s %12s %6s %10s %9s  %s\n", "kind", "prec", "N", "B",
                 "rate (G/s)", "bound (G/s)", "frac", "step (us)", "mem (MB)", "limit");
     std::ofstream csv;
