@@ -7,6 +7,10 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+#if defined(__x86_64__)
+#include <immintrin.h>
+#define HMFNET_RANK_ONE_AVX512 1
+#endif
 
 #include "dynamics/kernel_arithmetic.hpp"
 #include "dynamics/ordered_sum.hpp"
@@ -219,6 +223,83 @@ void field_block(const Item& it, std::size_t w, const FieldArgs& f, double* out)
   for (std::size_t j = 0; j < 2 * nb; ++j) out[2 * it.b0 + j] = acc[j];
 }
 
+#if defined(HMFNET_RANK_ONE_AVX512)
+// A whole group of 8 replicas in the lanes of one AVX-512 register (chosen at run time with the
+// sincos's instruction set, sincos.hpp): every lane does z_block's and field_one's IEEE
+// operations in their order (no contraction: -ffp-contract=off; vsqrtpd rounds as sqrtsd), so
+// the same bits as the baseline code, 4 times as many cells an instruction as field_pair
+// (tests/cli/instruction_sets_agree.sh).
+#define HMFNET_AVX512 __attribute__((target("avx512f,avx512dq")))
+
+// [c0 s0 c1 s1 ... c7 s7] at p as (c, s) of 8 lanes.
+HMFNET_AVX512 inline void split_pairs(const double* p, __m512d& c, __m512d& s) {
+  const __m512d v0 = _mm512_loadu_pd(p), v1 = _mm512_loadu_pd(p + 8);
+  c = _mm512_permutex2var_pd(v0, _mm512_setr_epi64(0, 2, 4, 6, 8, 10, 12, 14), v1);
+  s = _mm512_permutex2var_pd(v0, _mm512_setr_epi64(1, 3, 5, 7, 9, 11, 13, 15), v1);
+}
+
+// (x, y) of 8 lanes stored as [x0 y0 x1 y1 ... x7 y7] at p.
+HMFNET_AVX512 inline void store_pairs(double* p, __m512d x, __m512d y) {
+  _mm512_storeu_pd(p, _mm512_permutex2var_pd(x, _mm512_setr_epi64(0, 8, 1, 9, 2, 10, 3, 11), y));
+  _mm512_storeu_pd(p + 8,
+                   _mm512_permutex2var_pd(x, _mm512_setr_epi64(4, 12, 5, 13, 6, 14, 7, 15), y));
+}
+
+// z_block for a group of k_group = 8 replicas.
+HMFNET_AVX512 void z_block_avx512(const Item& it, std::size_t w, const double* a, const double* cs,
+                                  double* out) {
+  __m512d acc0 = _mm512_setzero_pd(), acc1 = _mm512_setzero_pd();
+  for (std::size_t r = it.r0; r < it.r1; ++r) {
+    const double* q = cs + 2 * (r * w + it.b0);
+    const __m512d va = _mm512_set1_pd(a[r]);
+    acc0 = _mm512_add_pd(acc0, _mm512_mul_pd(va, _mm512_loadu_pd(q)));
+    acc1 = _mm512_add_pd(acc1, _mm512_mul_pd(va, _mm512_loadu_pd(q + 8)));
+  }
+  _mm512_storeu_pd(out + 2 * it.b0, acc0);
+  _mm512_storeu_pd(out + 2 * it.b0 + 8, acc1);
+}
+
+// field_block for a group of 8 replicas.
+HMFNET_AVX512 void field_block_avx512(const Item& it, std::size_t w, const FieldArgs& f,
+                                      double* out) {
+  __m512d zc, zs;
+  split_pairs(f.z + 2 * it.b0, zc, zs);
+  const __m512d inverse_n = _mm512_set1_pd(f.inverse_n);
+  __m512d order = _mm512_setzero_pd(), coupling = _mm512_setzero_pd();
+  for (std::size_t r = it.r0; r < it.r1; ++r) {
+    const std::size_t k = r * w + it.b0;
+    __m512d c, s;
+    split_pairs(f.cs + 2 * k, c, s);
+    const double a = f.a[r];
+    const __m512d va = _mm512_set1_pd(a);
+    __m512d yc = _mm512_mul_pd(va, zc), ys = _mm512_mul_pd(va, zs);
+    if (!f.diagonal) {
+      const __m512d aa = _mm512_set1_pd(a * a);
+      yc = _mm512_sub_pd(yc, _mm512_mul_pd(aa, c));
+      ys = _mm512_sub_pd(ys, _mm512_mul_pd(aa, s));
+    }
+    const __m512d torque = _mm512_sub_pd(_mm512_mul_pd(c, ys), _mm512_mul_pd(s, yc));
+    _mm512_storeu_pd(f.g + k, _mm512_mul_pd(inverse_n, torque));
+    // All lanes of the masked form (GCC 12's unmasked one reads an undefined pass-through).
+    const __m512d norm2 = _mm512_add_pd(_mm512_mul_pd(yc, yc), _mm512_mul_pd(ys, ys));
+    order = _mm512_add_pd(order, _mm512_mask_sqrt_pd(norm2, 0xFF, norm2));
+    coupling = _mm512_add_pd(coupling, _mm512_add_pd(_mm512_mul_pd(c, yc), _mm512_mul_pd(s, ys)));
+  }
+  store_pairs(out + 2 * it.b0, order, coupling);
+}
+#undef HMFNET_AVX512
+#endif
+
+// Whether a work item runs in AVX-512: a whole group, where the sincos runs in it.
+bool wide(const Item& it) {
+#if defined(HMFNET_RANK_ONE_AVX512)
+  return it.nb == k_group && sincos_isa() == SincosIsa::avx512;
+#else
+  static_cast<void>(it);
+  return false;
+#endif
+}
+
 }  // namespace
 
 void RankOneForce::evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) {
@@ -239,6 +320,12 @@ void RankOneForce::evaluate(const RotorState& state, std::vector<double>& g, For
 #pragma omp for schedule(static)
   for (std::size_t i = 0; i < items; ++i) {
     const Item it = item(m_z_sums, i, w);
+#if defined(HMFNET_RANK_ONE_AVX512)
+    if (wide(it)) {
+      z_block_avx512(it, w, a, m_cs.data(), m_z_sums.partial(it.block));
+      continue;
+    }
+#endif
     with_group_size(it, w, [&](auto nb) {
       z_block<decltype(nb)::value>(it, w, a, m_cs.data(), m_z_sums.partial(it.block));
     });
@@ -251,6 +338,12 @@ void RankOneForce::evaluate(const RotorState& state, std::vector<double>& g, For
 #pragma omp for schedule(static)
   for (std::size_t i = 0; i < items; ++i) {
     const Item it = item(m_sums, i, w);
+#if defined(HMFNET_RANK_ONE_AVX512)
+    if (wide(it)) {
+      field_block_avx512(it, w, f, m_sums.partial(it.block));
+      continue;
+    }
+#endif
     with_group_size(it, w, [&](auto nb) {
       field_block<decltype(nb)::value>(it, w, f, m_sums.partial(it.block));
     });
