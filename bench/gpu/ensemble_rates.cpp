@@ -10,8 +10,8 @@
 //             state: theta, p, g and [cos, sin] read and written) / the copy bandwidth,
 //   sincos:   cells / the measured sincos rate,
 //   launches: 2 x the time of an empty kernel launched back to back,
-// and of a complete-graph row: cells / (sincos rate x min(1, replicas / multiprocessors))
-// (one block per replica: a replica uses one multiprocessor). The rank-one rows are the stepper
+// and of a complete-graph row: cells / (sincos rate x min(1, blocks / multiprocessors)) (a
+// replica's cluster of blocks uses one multiprocessor a block). The rank-one rows are the stepper
 // of `simulate --device cuda` on K_N (rank_one_ensemble.hpp: the CPU's bits), with each step's
 // order sums as a run's time average asks; their bound is the largest of the cells' stream
 // (~12 doubles a cell and step), the sincos and 6 launches a step.
@@ -139,10 +139,11 @@ Row complete_row(const Ceilings& c, std::int64_t n, int replicas, std::int64_t s
   r.rate = static_cast<double>(cells) * static_cast<double>(steps) / s;
   r.step_us = s / static_cast<double>(steps) * 1e6;
   r.memory_mb = static_cast<double>(cells) * 32.0 / 1e6;
-  const double share = std::min(1.0, static_cast<double>(replicas) / c.sms);
+  const int blocks = replicas * e.cluster_blocks();
+  const double share = std::min(1.0, static_cast<double>(blocks) / c.sms);
   r.bound = c.sincos * share;
-  r.limit = "sincos on " + std::to_string(std::min(replicas, c.sms)) + " of " +
-            std::to_string(c.sms) + " SMs";
+  r.limit = "sincos on " + std::to_string(std::min(blocks, c.sms)) + " of " +
+            std::to_string(c.sms) + " SMs (" + std::to_string(e.cluster_blocks()) + " a replica)";
   return r;
 }
 

@@ -27,11 +27,14 @@ struct Run {
   cuda::CompleteGraphRecords records;
 };
 
-Run device_run(std::int64_t n, int threads, std::int64_t steps, std::int64_t record_every) {
+// cluster: blocks per replica (0: the automatic choice).
+Run device_run(std::int64_t n, int threads, std::int64_t steps, std::int64_t record_every,
+               int cluster = 0) {
   std::vector<double> theta, p;
   gpu_test::waterbag(n, k_replicas, k_sigma0, 21, theta, p);
   cuda::CompleteGraphEnsembles e({{n, k_replicas, 1.0, record_every, steps / record_every}},
-                                 threads);
+                                 threads, cluster);
+  if (cluster > 0) REQUIRE(e.cluster_blocks() == cluster);
   e.set_state(0, theta, p);
   e.advance(leap_frog_coefficients(), k_h, {steps});
   Run r;
@@ -101,6 +104,21 @@ TEST_CASE("the complete graph's bits repeat run to run and for 128, 512 and 1024
     CHECK(same_bits(a.theta, b.theta));
     CHECK(same_bits(a.p, b.p));
     CHECK(same_bits(a.records.R_mean, b.records.R_mean));
+  }
+}
+
+TEST_CASE("the complete graph's bits are the same for a replica on 1, 2, 4 and 8 blocks",
+          "[gpu][complete]") {
+  // N = 3000: 2048 tiles over the cluster's blocks (128 threads: 16 to 2 tiles a thread); the
+  // tile sums travel between the blocks' shared memories at every stage and record.
+  const Run one = device_run(3000, 128, 200, 20, 1);
+  for (const int cluster : {2, 4, 8}) {
+    INFO(cluster << " blocks per replica");
+    const Run b = device_run(3000, 128, 200, 20, cluster);
+    CHECK(same_bits(one.theta, b.theta));
+    CHECK(same_bits(one.p, b.p));
+    CHECK(same_bits(one.records.R_mean, b.records.R_mean));
+    CHECK(same_bits(one.records.energy, b.records.energy));
   }
 }
 

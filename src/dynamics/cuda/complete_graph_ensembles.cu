@@ -1,5 +1,7 @@
 // The complete graph's block-per-replica stepper (complete_graph_ensembles.hpp). Compiled with
 // --fmad=false (kernel_arithmetic.hpp says why).
+#include <cooperative_groups.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -8,12 +10,18 @@
 #include <vector>
 
 #include "dynamics/cuda/complete_graph_ensembles.hpp"
+#include "dynamics/cuda/device_bounds.hpp"
 #include "dynamics/cuda/device_buffer.cuh"
 #include "dynamics/kernel_arithmetic.hpp"
 
 namespace hmfnet::cuda {
 
 namespace {
+
+namespace cg = cooperative_groups;
+
+// The most blocks a replica's cluster takes (the portable cluster size of sm_90).
+constexpr int k_max_cluster = 8;
 
 // Z's tiles: min(N, k_max_tiles) per replica, rotor m in tile m mod tiles (neighbouring threads
 // touch neighbouring rotors: coalesced), so that their sums fit shared memory (32 KiB).
@@ -80,11 +88,44 @@ __device__ __forceinline__ void store_phase(double theta, std::int64_t m, double
   zs += s;
 }
 
+// A replica's cluster of blocks (cg::this_cluster(): 1 to k_max_cluster blocks, consecutive in x):
+// block `rank` of the cluster owns the tiles t with (t / blockDim) mod blocks == rank, and each
+// rotor m belongs to tile m mod tiles, so a rotor is only ever touched by its tile's thread.
+struct Cluster {
+  int rank, blocks;
+  // The first tile of this thread, and the stride to its next.
+  __device__ int first_tile() const {
+    return rank * static_cast<int>(blockDim.x) + static_cast<int>(threadIdx.x);
+  }
+  __device__ int tile_stride() const { return blocks * static_cast<int>(blockDim.x); }
+};
+
+// Every block of the cluster gets all the tile sums: its own are in place; the others' are read
+// from their owners' shared memory between two cluster barriers (the first: every tile written;
+// the second: every copy read before any block's tree overwrites its array).
+__device__ void gather_tiles(cg::cluster_group& cluster, const Cluster& me, double* sums_c,
+                             double* sums_s, int tiles) {
+  cluster.sync();
+  if (me.blocks > 1) {
+    for (int t = static_cast<int>(threadIdx.x); t < tiles; t += static_cast<int>(blockDim.x)) {
+      const int owner = (t / static_cast<int>(blockDim.x)) % me.blocks;
+      if (owner == me.rank) continue;
+      sums_c[t] = cluster.map_shared_rank(sums_c, owner)[t];
+      sums_s[t] = cluster.map_shared_rank(sums_s, owner)[t];
+    }
+  }
+  cluster.sync();
+}
+
 __global__ void __launch_bounds__(1024)
     complete_graph_kernel(Arrays a, Table table, bool evaluate_only) {
   extern __shared__ double shared[];
-  const SystemInfo sys = a.systems[a.block_system[blockIdx.x]];
-  const int b = a.block_replica[blockIdx.x];
+  cg::cluster_group cluster = cg::this_cluster();
+  const Cluster me{static_cast<int>(cluster.block_rank()), static_cast<int>(cluster.num_blocks())};
+  const auto replica_block = static_cast<int>(blockIdx.x) / me.blocks;  // this cluster's replica
+  const bool lead = me.rank == 0 && threadIdx.x == 0;
+  const SystemInfo sys = a.systems[a.block_system[replica_block]];
+  const int b = a.block_replica[replica_block];
   const std::int64_t n = sys.n;
   const int tiles = static_cast<int>(sys.tiles);
   double* sums_c = shared;
@@ -97,28 +138,29 @@ __global__ void __launch_bounds__(1024)
 
   // Z of the current angles: [cos, sin] formed and summed tile by tile.
   if (evaluate_only) {
-    for (int t = static_cast<int>(threadIdx.x); t < tiles; t += static_cast<int>(blockDim.x)) {
+    for (int t = me.first_tile(); t < tiles; t += me.tile_stride()) {
       double zc = 0.0, zs = 0.0;
       for (std::int64_t m = t; m < n; m += tiles) store_phase(theta[m], m, cs, zc, zs);
       sums_c[t] = zc;
       sums_s[t] = zs;
     }
+    gather_tiles(cluster, me, sums_c, sums_s, tiles);
     tree_sum(sums_c, sums_s, tiles);
-    if (threadIdx.x == 0) {
-      a.z[2 * blockIdx.x] = sums_c[0];
-      a.z[2 * blockIdx.x + 1] = sums_s[0];
+    if (lead) {
+      a.z[2 * replica_block] = sums_c[0];
+      a.z[2 * replica_block + 1] = sums_s[0];
     }
     return;
   }
 
-  LocalField Z{a.z[2 * blockIdx.x], a.z[2 * blockIdx.x + 1]};
-  double r_sum = a.r_sum[blockIdx.x];
+  LocalField Z{a.z[2 * replica_block], a.z[2 * replica_block + 1]};
+  double r_sum = a.r_sum[replica_block];
   const double last_kick = table.kick[table.stages];
   bool pending = false;
   for (std::int64_t step = 0; step < sys.steps; ++step) {
     for (int i = 0; i < table.stages; ++i) {
       const bool kick_first = pending && i == 0;
-      for (int t = static_cast<int>(threadIdx.x); t < tiles; t += static_cast<int>(blockDim.x)) {
+      for (int t = me.first_tile(); t < tiles; t += me.tile_stride()) {
         double zc = 0.0, zs = 0.0;
         for (std::int64_t m = t; m < n; m += tiles) {
           // y_n = Z (a = 1, diagonal kept): rank_one_force.cpp's g.
@@ -134,6 +176,7 @@ __global__ void __launch_bounds__(1024)
         sums_c[t] = zc;
         sums_s[t] = zs;
       }
+      gather_tiles(cluster, me, sums_c, sums_s, tiles);
       tree_sum(sums_c, sums_s, tiles);
       Z = LocalField{sums_c[0], sums_s[0]};
       __syncthreads();  // every thread has read Z before the tiles are written again
@@ -145,7 +188,7 @@ __global__ void __launch_bounds__(1024)
     if (done % sys.record_every != 0) continue;
     // A record: the pending kick applied (the CPU's separate kick, the same bits), then
     // sum p^2 / 2 by the same tiles and tree.
-    for (int t = static_cast<int>(threadIdx.x); t < tiles; t += static_cast<int>(blockDim.x)) {
+    for (int t = me.first_tile(); t < tiles; t += me.tile_stride()) {
       double kinetic = 0.0;
       for (std::int64_t m = t; m < n; m += tiles) {
         const double g = coupling_force(inverse_n, cs[2 * m], cs[2 * m + 1], Z);
@@ -157,9 +200,10 @@ __global__ void __launch_bounds__(1024)
       sums_s[t] = 0.0;
     }
     pending = false;
+    gather_tiles(cluster, me, sums_c, sums_s, tiles);
     tree_sum(sums_c, sums_s, tiles);
     const std::int64_t record = done / sys.record_every - 1;
-    if (threadIdx.x == 0 && record < sys.records) {
+    if (lead && record < sys.records) {
       const std::int64_t at = sys.record_offset + b * sys.records + record;
       a.R_mean[at] = r_sum / static_cast<double>(sys.record_every);
       a.energy[at] = sums_c[0] - K * (Z.re * Z.re + Z.im * Z.im) * (0.5 * inverse_n);
@@ -168,16 +212,20 @@ __global__ void __launch_bounds__(1024)
     __syncthreads();
   }
   if (pending) {
-    for (std::int64_t m = threadIdx.x; m < n; m += blockDim.x) {
-      const double g = coupling_force(inverse_n, cs[2 * m], cs[2 * m + 1], Z);
-      p[m] = kicked_momentum(p[m], last_kick, K, g);
+    for (int t = me.first_tile(); t < tiles; t += me.tile_stride()) {
+      for (std::int64_t m = t; m < n; m += tiles) {
+        const double g = coupling_force(inverse_n, cs[2 * m], cs[2 * m + 1], Z);
+        p[m] = kicked_momentum(p[m], last_kick, K, g);
+      }
     }
   }
-  if (threadIdx.x == 0) {
-    a.z[2 * blockIdx.x] = Z.re;
-    a.z[2 * blockIdx.x + 1] = Z.im;
-    a.r_sum[blockIdx.x] = r_sum;
+  if (lead) {
+    a.z[2 * replica_block] = Z.re;
+    a.z[2 * replica_block + 1] = Z.im;
+    a.r_sum[replica_block] = r_sum;
   }
+  // No block leaves while another may still read its shared memory (the last gather's copies
+  // are complete at its second barrier, before any block gets here).
 }
 
 }  // namespace
@@ -187,7 +235,8 @@ struct CompleteGraphEnsembles::Impl {
   std::vector<SystemInfo> info;
   std::vector<std::int64_t> done;
   int threads = 512;
-  int blocks = 0;
+  int blocks = 0;   // replicas over all systems: one cluster each
+  int cluster = 1;  // blocks per cluster
   DeviceBuffer<SystemInfo> d_info;
   DeviceBuffer<int> block_system, block_replica;
   DeviceBuffer<double> theta, p, cs, z, r_sum, R_mean, energy;
@@ -200,18 +249,45 @@ struct CompleteGraphEnsembles::Impl {
 
   void launch(const Table& table, bool evaluate_only) {
     d_info.upload(info.data(), info.size());
-    const std::size_t shared = 2 * k_max_tiles * sizeof(double);
-    complete_graph_kernel<<<static_cast<unsigned>(blocks), static_cast<unsigned>(threads),
-                            shared>>>(arrays(), table, evaluate_only);
-    check_launch("complete graph kernel");
+    cudaLaunchConfig_t config{};
+    config.gridDim = dim3(static_cast<unsigned>(blocks * cluster));
+    config.blockDim = dim3(static_cast<unsigned>(threads));
+    config.dynamicSmemBytes = 2 * k_max_tiles * sizeof(double);
+    cudaLaunchAttribute attribute{};
+    attribute.id = cudaLaunchAttributeClusterDimension;
+    attribute.val.clusterDim.x = static_cast<unsigned>(cluster);
+    attribute.val.clusterDim.y = 1;
+    attribute.val.clusterDim.z = 1;
+    config.attrs = &attribute;
+    config.numAttrs = 1;
+    check(cudaLaunchKernelEx(&config, complete_graph_kernel, arrays(), table, evaluate_only),
+          "complete graph kernel");
   }
 };
 
+namespace {
+
+// Blocks per replica: as many as leave no multiprocessor idle (a power of two up to
+// k_max_cluster), but no more than the largest system's tiles fill.
+int automatic_cluster(int replicas, std::int64_t max_tiles, int threads) {
+  int c = 1;
+  while (2 * c <= k_max_cluster && 2 * c * replicas <= multiprocessors() &&
+         static_cast<std::int64_t>(c) * threads < max_tiles)
+    c *= 2;
+  return c;
+}
+
+}  // namespace
+
 CompleteGraphEnsembles::CompleteGraphEnsembles(std::vector<CompleteGraphSystem> systems,
-                                               int threads_per_block) {
+                                               int threads_per_block, int cluster_blocks) {
   if (threads_per_block < 32 || threads_per_block > 1024 || threads_per_block % 32 != 0) {
     throw DeviceError("complete graph ensembles: threads per block " +
                       std::to_string(threads_per_block) + " is not a multiple of 32 in [32, 1024]");
+  }
+  if (cluster_blocks < 0 || cluster_blocks > k_max_cluster) {
+    throw DeviceError("complete graph ensembles: blocks per replica " +
+                      std::to_string(cluster_blocks) + " outside [1, 8] (0: automatic)");
   }
   if (systems.empty()) throw DeviceError("complete graph ensembles: no system given");
   std::int64_t state = 0, records = 0;
@@ -241,6 +317,10 @@ CompleteGraphEnsembles::CompleteGraphEnsembles(std::vector<CompleteGraphSystem> 
   e.done.assign(e.systems.size(), 0);
   e.threads = threads_per_block;
   e.blocks = blocks;
+  std::int64_t max_tiles = 1;
+  for (const SystemInfo& s : e.info) max_tiles = std::max(max_tiles, s.tiles);
+  e.cluster =
+      cluster_blocks > 0 ? cluster_blocks : automatic_cluster(blocks, max_tiles, threads_per_block);
   std::vector<int> bs, br;
   for (std::size_t s = 0; s < e.systems.size(); ++s) {
     for (int b = 0; b < e.systems[s].replicas; ++b) {
@@ -378,5 +458,7 @@ std::vector<double> CompleteGraphEnsembles::order_sums(std::size_t system) const
 void CompleteGraphEnsembles::synchronize() const {
   check(cudaDeviceSynchronize(), "complete graph ensembles");
 }
+
+int CompleteGraphEnsembles::cluster_blocks() const { return m_impl->cluster; }
 
 }  // namespace hmfnet::cuda

@@ -1,12 +1,14 @@
 #pragma once
 // Replicas of the all-to-all HMF (K_N with self-loops, A = 1 1^T: the rank-one force of
-// rank_one_force.hpp with a = 1 and the diagonal) stepped on a CUDA device, one thread block per
-// replica for many steps per launch. Several systems (sizes N) run side by side in one launch,
-// as a finite-size campaign needs (qss_lifetime). Per step and stage a block updates its rotors
-// (the CPU's kick, kick-drift and sincos, kernel_arithmetic.hpp) and sums Z = sum_m e^{i theta_m}
-// over min(N, 2048) fixed tiles (rotor m in tile m mod tiles), each in order, then the tiles by a
-// fixed pairwise tree: the bits depend on N alone, not on the launch (threads per block), and
-// repeat run to run.
+// rank_one_force.hpp with a = 1 and the diagonal) stepped on a CUDA device, one cluster of 1 to
+// 8 thread blocks per replica (sm_90's thread block clusters: few replicas still fill every
+// multiprocessor) for many steps per launch. Several systems (sizes N) run side by side in one
+// launch, as a finite-size campaign needs (qss_lifetime). Per step and stage a cluster updates its
+// rotors (the CPU's kick, kick-drift and sincos, kernel_arithmetic.hpp) and sums
+// Z = sum_m e^{i theta_m} over min(N, 2048) fixed tiles (rotor m in tile m mod tiles), each in
+// order; every block of the cluster reads the other blocks' tile sums from their shared memory
+// and adds all tiles by the same fixed pairwise tree: the bits depend on N alone, not on the
+// launch (threads per block, blocks per cluster), and repeat run to run.
 // The CPU sums Z in another fixed order (2048-row blocks), so the two agree to rounding, not to
 // the bit (tests/gpu/test_complete_graph_ensembles.cpp: 1e-12 relative over 100 steps).
 //
@@ -39,9 +41,11 @@ struct CompleteGraphRecords {
 class CompleteGraphEnsembles {
  public:
   /// Throws DeviceError where no device can run this build, when memory does not suffice
-  /// (checked before allocating), or for N < 1 or N > 2^31 - 1.
+  /// (checked before allocating), or for N < 1 or N > 2^31 - 1. cluster_blocks: the thread
+  /// blocks each replica is spread over (a cluster, 1 to 8; 0: as many as keep every
+  /// multiprocessor busy). The results depend on neither.
   explicit CompleteGraphEnsembles(std::vector<CompleteGraphSystem> systems,
-                                  int threads_per_block = 512);
+                                  int threads_per_block = 512, int cluster_blocks = 0);
   ~CompleteGraphEnsembles();
   CompleteGraphEnsembles(const CompleteGraphEnsembles&) = delete;
   CompleteGraphEnsembles& operator=(const CompleteGraphEnsembles&) = delete;
@@ -60,6 +64,8 @@ class CompleteGraphEnsembles {
   /// Z of each replica of a system at its current state, [Re, Im] per replica.
   std::vector<double> order_sums(std::size_t system) const;
   void synchronize() const;
+  /// The blocks per replica chosen.
+  int cluster_blocks() const;
 
  private:
   struct Impl;
