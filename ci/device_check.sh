@@ -195,6 +195,8 @@ check_simulate() {
   [ -f "$pack" ] || { record "simulate --device cuda" skip 0 "no $pack (ci/device_prepare.sh)"; return 0; }
   rm -rf "$dir" && mkdir -p "$dir"
   tar -xJf "$pack" -C "$dir" || { record "simulate --device cuda" fail "$(elapsed_since "$t0")" "cannot unpack $pack"; return 0; }
+  # The pack's newest glibc symbol against this machine's glibc.
+  { echo "pack needs $(cat "$dir/GLIBC_REQUIRED" 2>/dev/null); this machine: $(ldd --version 2>&1 | head -n 1)"; } >>"$log"
   bounded "$(limit_for 150)" "$log" python3 "$root/ci/device_simulate.py" "$dir" "$build/cli-work" || rc=$?
   case $rc in
     0) record "simulate --device cuda" pass "$(elapsed_since "$t0")" "$(tail -n 1 "$log")" ;;

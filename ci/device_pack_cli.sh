@@ -60,5 +60,15 @@ export OMPI_MCA_rmaps_base_oversubscribe=1
 exec "$here/bin/$program" "$@"
 SH
 chmod +x "$stage/run"
+
+# Every library the executable loads must resolve into the pack or to the system's own C library.
+unresolved=$(LD_LIBRARY_PATH="$stage/lib" ldd "$stage/bin/hmfnet" |
+  awk -v lib="$stage/lib/" '$2 == "=>" && index($3, lib) != 1 { print $1 " -> " $3 }' |
+  grep -Ev "$system_lib" || true)
+[ -z "$unresolved" ] || die "libraries that resolve outside the pack: $unresolved"
+# The newest glibc symbol version any packed binary needs: the GPU machine's glibc must have it.
+glibc=$(find "$stage/bin" "$stage/lib" -type f -exec objdump -T {} + 2>/dev/null |
+  grep -o 'GLIBC_[0-9.]*' | sort -uV | tail -n 1)
+echo "$glibc" >"$stage/GLIBC_REQUIRED"
 tar -C "$stage" -cJf "$pack" .
 echo "packed $(du -sh "$pack" | cut -f1): $(find "$stage/lib" -type f | wc -l) libraries, $(find "$prefix" -name 'mca_*.so' | wc -l) Open MPI plugins -> $pack"

@@ -69,6 +69,11 @@ if [ -x "$cli_build/bin/hmfnet" ] && grep -q '^HMFNET_CUDA:BOOL=ON' "$cli_build/
     grep -q -- '--device cuda: .*run it with --device cpu' <<<"$refusal" \
       || die "the packed CLI did not refuse --device cuda here as expected: $refusal"
   fi
+  # The check's end-to-end script with the CPU in the device's place, on small networks.
+  HMFNET_SIMULATE_DEVICE=cpu HMFNET_SIMULATE_SMALL=1 python3 ci/device_simulate.py "$try" \
+    "$try/work" >"$logs/simulate-try.log" 2>&1 \
+    || die "ci/device_simulate.py failed here with the CPU in the device's place: $logs/simulate-try.log"
+  echo "packed CLI tried: $(tail -n 1 "$logs/simulate-try.log"); needs $(cat "$try/GLIBC_REQUIRED")"
 else
   echo "device_prepare: no $cli_build/bin/hmfnet built with HMFNET_CUDA=ON: the check's simulate --device cuda will skip" >&2
 fi

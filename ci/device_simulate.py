@@ -4,16 +4,20 @@ with the CLI that ci/device_pack_cli.sh packed on the CPU machine:
 
   1. the same points (every <R>_t, SEM, energy error and momentum drift, per replica) and step
      counts as `--device cpu`, compared exactly (--json prints doubles to round-trip precision):
-     float64 and float32, leapfrog and yoshida4, a K per replica (--K-across-replicas);
+     float64 and float32, leapfrog and yoshida4, a K per replica (--K-across-replicas), on an ER
+     network (the sparse force) and on K_N with and without self-loops (the rank-one force, 13
+     and 16 replicas: the CPU's AVX-512 groups whole and partial);
   2. a checkpoint written by one device and resumed on the other (SIGTERM once the checkpoint of
      the second K exists, then --resume): the points of the uninterrupted run, both ways;
   3. the rate of both on one larger network (stored entries x replicas x steps / s), and the
      device's name and the CPU threads beside it.
 
-Prints one line per case and a last line "simulate: N cases, M failed"; exits 1 if any failed.
+Prints one line per case (a case whose command fails is a failed case, with its error) and a
+last line "simulate: N cases, M failed"; exits 1 if any failed.
 Usage: device_simulate.py PACKED_CLI_DIR WORK_DIR
-HMFNET_SIMULATE_DEVICE=cpu runs every case with the CPU in the device's place (ci/device_prepare.sh
-does, to try the script and the packed CLI where there is no GPU).
+HMFNET_SIMULATE_DEVICE=cpu runs every case with the CPU in the device's place and
+HMFNET_SIMULATE_SMALL=1 on smaller networks (ci/device_prepare.sh does both, to try the script and
+the packed CLI where there is no GPU).
 """
 import json
 import os
@@ -24,6 +28,7 @@ import time
 
 cli, work = sys.argv[1], sys.argv[2]
 device = os.environ.get("HMFNET_SIMULATE_DEVICE", "cuda")
+small = os.environ.get("HMFNET_SIMULATE_SMALL") == "1"
 os.makedirs(work, exist_ok=True)
 failures = []
 cases = 0
@@ -50,30 +55,59 @@ def case(name, ok, note=""):
     print(f"{'pass' if ok else 'FAIL'}  {name}  {note}", flush=True)
 
 
+def guarded(name, body):
+    """Runs one case; an exception (a command that failed) fails it, and the others still run."""
+    try:
+        body()
+    except Exception as e:  # noqa: BLE001 - every failure is reported as the case's
+        case(name, False, f"{type(e).__name__}: {str(e)[:300]}")
+
+
 def same_run(a, b):
     return a["points"] == b["points"] and a["steps"] == b["steps"]
 
 
+def same_points(name, base):
+    def body():
+        cpu = run_json("simulate", *base, "--device", "cpu")
+        gpu = run_json("simulate", *base, "--device", device)
+        case(name, same_run(cpu, gpu) and (device == "cpu" or gpu["device"] != "cpu"),
+             f"device {gpu['device']!r}, <R>_t {[round(p['R_mean'], 6) for p in gpu['points']]}")
+    guarded(name, body)
+
+
 net = os.path.join(work, "er.h5")
-hmfnet("generate", "er", "--n", 20000, "--mean-degree", 40, "--seed", 3, "--output", net)
+hmfnet("generate", "er", "--n", 2000 if small else 20000, "--mean-degree", 40, "--seed", 3,
+       "--output", net)
 base = [net, "--K-over-Kc", "0.5,2", "--h", "0.05", "--T", "20", "--transient", "5",
         "--seed", "7", "--replicas", "3"]
 for extra in (["--integrator", "yoshida4"], ["--precision", "float32"],
               ["--K-across-replicas", "--record-stride", "7"]):
-    cpu = run_json("simulate", *base, *extra, "--device", "cpu")
-    gpu = run_json("simulate", *base, *extra, "--device", device)
-    case(f"{device} = cpu " + " ".join(extra),
-         same_run(cpu, gpu) and (device == "cpu" or gpu["device"] != "cpu"),
-         f"device {gpu['device']!r}, <R>_t {[round(p['R_mean'], 6) for p in gpu['points']]}")
+    same_points(f"ER: {device} = cpu " + " ".join(extra), base + extra)
+for loops, replicas in (("--self-loops", "16"), (None, "13")):
+    kn = os.path.join(work, f"k{replicas}.h5")
+    hmfnet("generate", "complete", "--n", 3000, *([loops] if loops else []), "--output", kn)
+    same_points(f"K_N{' ' + loops if loops else ''}: {device} = cpu, {replicas} replicas",
+                [kn, "--K-over-Kc", "1.5", "--h", "0.1", "--T", "30", "--transient", "5",
+                 "--seed", "2", "--replicas", replicas, "--momenta", "waterbag",
+                 "--integrator", "blanes_moan", "--record-stride", "11"])
 
 # Checkpoints across devices: three K of 20000 steps (about a second each on either), the signal
-# once the checkpoint of the second K exists.
-small = os.path.join(work, "er_small.h5")
-hmfnet("generate", "er", "--n", 2000, "--mean-degree", 20, "--seed", 4, "--output", small)
-long_run = ["simulate", small, "--K-over-Kc", "0.5,1.5,3", "--h", "0.05", "--T", "1000",
-            "--transient", "100", "--seed", "9", "--replicas", "3", "--json", "--quiet"]
-whole = json.loads(hmfnet(*long_run, "--device", "cpu").stdout)
-for first, second in ((device, "cpu"), ("cpu", device)):
+# once the run's first checkpoint exists (written when the second K starts, or by the 5 s timer).
+small_net = os.path.join(work, "er_small.h5")
+hmfnet("generate", "er", "--n", 2000, "--mean-degree", 20, "--seed", 4, "--output", small_net)
+long_run = ["simulate", small_net, "--K-over-Kc", "0.5,1.5,3", "--h", "0.05",
+            "--T", "200" if small else "1000", "--transient", "100", "--seed", "9",
+            "--replicas", "3", "--json", "--quiet"]
+
+
+uninterrupted = {}
+
+
+def crossing(first, second):
+    if "cpu" not in uninterrupted:
+        uninterrupted["cpu"] = json.loads(hmfnet(*long_run, "--device", "cpu").stdout)
+    whole = uninterrupted["cpu"]
     ckpt = os.path.join(work, f"{first}.ckpt.h5")
     if os.path.exists(ckpt):
         os.remove(ckpt)
@@ -83,25 +117,39 @@ for first, second in ((device, "cpu"), ("cpu", device)):
     t0 = time.time()
     while not os.path.exists(ckpt) and proc.poll() is None and time.time() - t0 < 60:
         time.sleep(0.02)
+    if proc.poll() is not None:
+        _, err = proc.communicate()
+        case(f"checkpoint {first} -> resume {second}", False,
+             f"the first run ended (exit {proc.returncode}) before the signal: {err.strip()[:200]}")
+        return
     proc.send_signal(signal.SIGTERM)
     _, err = proc.communicate()
-    stopped = proc.returncode == 143
     resumed = json.loads(hmfnet(*args, "--resume", "--device", second).stdout)
     case(f"checkpoint {first} -> resume {second}",
-         stopped and resumed["resumed"] and same_run(whole, resumed),
+         proc.returncode == 143 and resumed["resumed"] and same_run(whole, resumed),
          f"first exit {proc.returncode} ({err.strip()[:100]})")
 
-# Rates on one larger network (one run each; the CPU on every core of this machine).
-big = os.path.join(work, "er_big.h5")
-hmfnet("generate", "er", "--n", 200000, "--mean-degree", 100, "--seed", 5, "--output", big)
-rate = [big, "--K-over-Kc", "2", "--h", "0.05", "--T", "6", "--transient", "1", "--seed", "1",
-        "--replicas", "8", "--record-stride", "1000"]
-cpu = run_json("simulate", *rate, "--device", "cpu")
-gpu = run_json("simulate", *rate, "--device", device)
-ratio = gpu["nnz_steps_per_second"] / cpu["nnz_steps_per_second"]
-case("rate ER N=2e5 <d>=100 B=8", same_run(cpu, gpu),
-     f"cpu {cpu['nnz_steps_per_second'] / 1e9:.3f} G/s ({cpu['threads']} threads), "
-     f"{gpu['device']} {gpu['nnz_steps_per_second'] / 1e9:.3f} G/s: {ratio:.1f}x")
+
+for first, second in ((device, "cpu"), ("cpu", device)):
+    guarded(f"checkpoint {first} -> resume {second}", lambda: crossing(first, second))
+
+
+def rates():
+    big = os.path.join(work, "er_big.h5")
+    hmfnet("generate", "er", "--n", 20000 if small else 200000, "--mean-degree", 100, "--seed", 5,
+           "--output", big)
+    rate = [big, "--K-over-Kc", "2", "--h", "0.05", "--T", "6", "--transient", "1",
+            "--seed", "1", "--replicas", "8", "--record-stride", "1000"]
+    cpu = run_json("simulate", *rate, "--device", "cpu")
+    gpu = run_json("simulate", *rate, "--device", device)
+    ratio = gpu["nnz_steps_per_second"] / cpu["nnz_steps_per_second"]
+    case("rate ER <d>=100 B=8", same_run(cpu, gpu),
+         f"N = {cpu['n']}: cpu {cpu['nnz_steps_per_second'] / 1e9:.3f} G/s "
+         f"({cpu['threads']} threads), {gpu['device']} "
+         f"{gpu['nnz_steps_per_second'] / 1e9:.3f} G/s: {ratio:.1f}x")
+
+
+guarded("rate ER <d>=100 B=8", rates)
 print(f"simulate: {cases} cases, {len(failures)} failed" +
       (f" ({', '.join(failures)})" if failures else ""))
 sys.exit(1 if failures else 0)

@@ -409,11 +409,15 @@ void Run::finish_segment(int k_index) {
 // The last step of the next chunk the stepper runs alone: the next record (a multiple of the
 // stride, or the segment's end), the end of the transient (the samples start after it, and node
 // data take theta_T1 there), one step while node data are sampled (they read every step's y_n),
-// and the steps this session may still take (`left`, -1: no limit).
+// the steps this session may still take (`left`, -1: no limit), and k_chunk_values order sums
+// (a record stride of 10^8 steps must not hold 10^8 x replicas of them: the memory stays that
+// of a per-step loop). Where a chunk ends changes no result.
 std::int64_t Run::chunk_end(std::int64_t left) const {
+  constexpr std::int64_t k_chunk_values = std::int64_t{1} << 20;  // 8 MB of order sums
   const std::int64_t step = m_seg.step;
   const std::int64_t stride = m_params.record_stride;
   std::int64_t end = std::min(segment_steps(), (step / stride + 1) * stride);
+  end = std::min(end, step + std::max<std::int64_t>(1, k_chunk_values / m_width));
   if (step < transient_steps()) {
     end = std::min(end, transient_steps());
   } else if (m_params.node_data) {
@@ -439,6 +443,7 @@ SimulationResult Run::execute() {
   std::int64_t session_steps = 0;
   const auto w = static_cast<std::ptrdiff_t>(m_width);
   std::vector<double> order;  // a chunk's order sums, steps x replicas
+  std::vector<double> one_step(static_cast<std::size_t>(m_width));
   for (int k = m_k_start; k < static_cast<int>(m_params.K.size()); ++k) {
     m_k = k;
     if (k != m_k_start) {
@@ -464,8 +469,10 @@ SimulationResult Run::execute() {
       m_result.steps += n;
       for (std::int64_t i = 0; i < n; ++i) {
         ++m_seg.step;
-        if (sampled)
-          sample(std::vector<double>(order.begin() + i * w, order.begin() + (i + 1) * w));
+        if (sampled) {
+          std::copy(order.begin() + i * w, order.begin() + (i + 1) * w, one_step.begin());
+          sample(one_step);
+        }
       }
       if (m_seg.step == transient && m_params.node_data) m_seg.theta_T1 = m_stepper->state().theta;
       if ((m_seg.step % m_params.record_stride == 0 || m_seg.step == steps) && record(k)) {

@@ -368,6 +368,27 @@ TEST_CASE(
     CHECK(bit_difference(y.kinetic, x.kinetic).count == 0);
     CHECK(bit_difference(y.momentum_scale, x.momentum_scale).count == 0);
   }
+  // A = a a^T with a in [0.5, 1.5] (the disordered HMF), with and without the diagonal.
+  std::vector<double> a(4500);
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> spread(0.5, 1.5);
+  for (double& x : a) x = spread(rng);
+  for (const bool diagonal : {true, false}) {
+    RankOneForce rank_one(RankOneStructure{a, diagonal}, 0, 4500);
+    HostStepper cpu(rank_one);
+    cpu.set_state(initial_state(0, 4500, ic));
+    auto host = gpu_test::HostEnsemble::rank_one(a, 3, diagonal);
+    host.K = K;
+    host.set_state(cpu.state().theta, cpu.state().p);
+    std::vector<double> cpu_order, host_order;
+    cpu.advance(LeapFrog(), 0.1, K, 20, &cpu_order);
+    host.advance(leap_frog_coefficients(), 0.1, 20, &host_order);
+    INFO("a a^T, diagonal " << diagonal);
+    CHECK(bit_difference(host.theta, cpu.state().theta).count == 0);
+    CHECK(bit_difference(host.p, cpu.state().p).count == 0);
+    CHECK(bit_difference(host_order, cpu_order).count == 0);
+    CHECK(bit_difference(host.sums().coupling, cpu.sums().coupling).count == 0);
+  }
 }
 
 TEST_CASE(

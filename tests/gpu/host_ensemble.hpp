@@ -84,9 +84,14 @@ class HostEnsemble {
         m_w(static_cast<std::size_t>(replicas)),
         m_float32(float32) {}
   static HostEnsemble complete(std::int64_t n, int replicas, bool self_loops = true) {
-    HostEnsemble e(cuda::HostCsr{n, {}, {}}, replicas, false);
+    return rank_one(std::vector<double>(static_cast<std::size_t>(n), 1.0), replicas, self_loops);
+  }
+  /// A = a a^T, with or without its diagonal (rank_one_force.hpp).
+  static HostEnsemble rank_one(std::vector<double> a, int replicas, bool diagonal) {
+    HostEnsemble e(cuda::HostCsr{static_cast<std::int64_t>(a.size()), {}, {}}, replicas, false);
     e.m_complete = true;
-    e.m_self_loops = self_loops;
+    e.m_self_loops = diagonal;
+    e.m_a = std::move(a);
     return e;
   }
 
@@ -203,8 +208,9 @@ class HostEnsemble {
     }
   }
 
-  // rank_one_force.cpp with a = 1: Z by 2048-row blocks, each from 0 in order, the blocks in
-  // order from 0 (OrderedColumnSums), then y_n = Z - [no self-loops] e^{i theta_n}.
+  // rank_one_force.cpp: Z = sum_m a_m e^{i theta_m} by 2048-row blocks, each from 0 in order,
+  // the blocks in order from 0 (OrderedColumnSums), then y_n = a_n Z - [no diagonal]
+  // a_n^2 e^{i theta_n}.
   void complete_fields() {
     m_z.assign(2 * m_w, 0.0);
     for (std::int64_t first = 0; first < m_n; first += 2048) {
@@ -212,16 +218,16 @@ class HostEnsemble {
       for (std::int64_t r = first; r < std::min(m_n, first + 2048); ++r) {
         for (std::size_t b = 0; b < m_w; ++b) {
           const std::size_t k = static_cast<std::size_t>(r) * m_w + b;
-          block[2 * b] += 1.0 * m_cs[2 * k];
-          block[2 * b + 1] += 1.0 * m_cs[2 * k + 1];
+          block[2 * b] += m_a[static_cast<std::size_t>(r)] * m_cs[2 * k];
+          block[2 * b + 1] += m_a[static_cast<std::size_t>(r)] * m_cs[2 * k + 1];
         }
       }
       for (std::size_t j = 0; j < block.size(); ++j) m_z[j] += block[j];
     }
     for (std::size_t k = 0; k < cells(); ++k) {
       const std::size_t b = k % m_w;
-      m_y[k] = rank_one_field(1.0, m_z[2 * b], m_z[2 * b + 1], m_cs[2 * k], m_cs[2 * k + 1],
-                              m_self_loops);
+      m_y[k] = rank_one_field(m_a[k / m_w], m_z[2 * b], m_z[2 * b + 1], m_cs[2 * k],
+                              m_cs[2 * k + 1], m_self_loops);
       m_g[k] = coupling_force(1.0 / static_cast<double>(m_n), m_cs[2 * k], m_cs[2 * k + 1], m_y[k]);
     }
   }
@@ -233,6 +239,7 @@ class HostEnsemble {
   bool m_float32;
   bool m_complete = false;
   bool m_self_loops = true;
+  std::vector<double> m_a;  // rank-one: a_n
   std::vector<double> m_cs, m_g, m_z;
   std::vector<float> m_cs32;
   std::vector<LocalField> m_y;

@@ -1,12 +1,14 @@
 // The device's rank-one step (rank_one_ensemble.hpp) against the CPU's (host_ensemble.hpp:
-// rank_one_force.cpp's arithmetic in its order), K_N with and without self-loops: the state bit
-// for bit over 100 leap-frog steps and 30 of yoshida4, a K per replica; each step's order sums
+// rank_one_force.cpp's arithmetic in its order), K_N with and without self-loops and A = a a^T
+// with a in [0.5, 1.5]: the state bit for bit over 100 leap-frog steps and 30 of yoshida4, a K
+// per replica; each step's order sums
 // and a record's five sums bit for bit across chunks; the same bits for 64, 256 and 1024
 // threads per block and run to run.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <random>
 #include <vector>
 
 #include "dynamics/cuda/rank_one_ensemble.hpp"
@@ -32,12 +34,22 @@ const std::vector<double>& couplings() {
   return K;
 }
 
+// a_n: 1 (K_N), or in [0.5, 1.5] (the disordered HMF, A = a a^T).
+std::vector<double> weights(bool disordered) {
+  std::vector<double> a(k_n, 1.0);
+  if (!disordered) return a;
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> spread(0.5, 1.5);
+  for (double& x : a) x = spread(rng);
+  return a;
+}
+
 // `steps` steps of `c` in the given chunks (the order sums of every step), on the device.
 Run device_run(bool self_loops, int threads, const SplittingCoefficients& c, double h,
-               const std::vector<std::int64_t>& chunks) {
+               const std::vector<std::int64_t>& chunks, bool disordered = false) {
   std::vector<double> theta, p;
   gpu_test::waterbag(k_n, k_replicas, 0.6, 21, theta, p);
-  cuda::RankOneEnsemble e(std::vector<double>(k_n, 1.0), self_loops, k_replicas, threads);
+  cuda::RankOneEnsemble e(weights(disordered), self_loops, k_replicas, threads);
   e.set_coupling(couplings());
   e.set_state(theta, p);
   Run r;
@@ -47,10 +59,11 @@ Run device_run(bool self_loops, int threads, const SplittingCoefficients& c, dou
   return r;
 }
 
-Run host_run(bool self_loops, const SplittingCoefficients& c, double h, std::int64_t steps) {
+Run host_run(bool self_loops, const SplittingCoefficients& c, double h, std::int64_t steps,
+             bool disordered = false) {
   std::vector<double> theta, p;
   gpu_test::waterbag(k_n, k_replicas, 0.6, 21, theta, p);
-  auto host = HostEnsemble::complete(k_n, k_replicas, self_loops);
+  auto host = HostEnsemble::rank_one(weights(disordered), k_replicas, self_loops);
   host.K = couplings();
   host.set_state(theta, p);
   Run r;
@@ -82,6 +95,9 @@ TEST_CASE("the rank-one device step is the CPU's bits: K_N with and without self
                  host_run(self_loops, leap_frog_coefficients(), 0.1, 100));
     require_same(device_run(self_loops, 256, yoshida4_coefficients(), 0.1, {30}),
                  host_run(self_loops, yoshida4_coefficients(), 0.1, 30));
+    INFO("a in [0.5, 1.5]");
+    require_same(device_run(self_loops, 256, leap_frog_coefficients(), 0.1, {13, 37}, true),
+                 host_run(self_loops, leap_frog_coefficients(), 0.1, 50, true));
   }
 }
 

@@ -31,7 +31,7 @@ __global__ void z_blocks_kernel(const double* a, const double* cs, std::int64_t 
   const std::int64_t end =
       (block + 1) * k_z_block_rows < rows ? (block + 1) * k_z_block_rows : rows;
   double re = 0.0, im = 0.0;
-#pragma unroll 8
+#pragma unroll 16
   for (std::int64_t r = block * k_z_block_rows; r < end; ++r) {
     const std::int64_t k = r * replicas + b;
     re += a[r] * cs[2 * k];
