@@ -1,11 +1,20 @@
 #!/usr/bin/env bash
 # The kernel's whole table in one run (docs/performance.md, goals 1-5): hmfnet's leap-frog step
-# (LeapFrogStep) beside the plain OpenMP CSR yardstick (YardstickStep), the measured gather bound
-# of the same table
-# (GatherBound) and the floor it makes with the kernel's one sincos per rotor (SincosFloor;
-# glibc's scalar sincos, which it replaced, in SincosLibc; all in bench_gather_bound.cpp), at
+# (LeapFrogStep) beside the plain OpenMP CSR yardstick (YardstickStep) and the step's bound, at
 # N = 10^4 and 10^6 (ER, mean degree 100), 1 and 2 threads, B = 1, 4, 8 replicas, float64 and
 # float32; then the sincos per angle and the L1/L2/L3/memory gather ladder.
+#
+# The bound ("A bound that bounds", docs/performance.md): a step takes at least its sincos pass
+# (one angle per rotor and replica, the kernel's own sincos at its measured rate: SincosFloor)
+# plus its rows pass, and the rows pass at least the larger of
+#   index:  4 B per stored entry read in order from where an array of the index's size lives
+#           (StreamRead at that size and thread count: bench_peak_rates.cpp),
+#   L1:     per stored entry, one load and one add of each of the ceil(record / w) pieces of its
+#           gathered record of 2B values (plus the index's own 4 B), at the most (load, add) pairs
+#           a second of the widest w this CPU has (L1LoadAdd),
+# each measured at its best case, so no code runs above it; a row above 100% proves the bound
+# wrong. The gather bound of the old "floor" (GatherBound: a random-order microbenchmark) is
+# printed beside it: it is not a bound (the segmented kernel beats it at N = 10^6).
 # Rates are stored entries x replicas x steps per second. Ratios are within this one run (these
 # machines are noisy); run on an idle machine. Needs a build with -DHMFNET_BUILD_BENCH=ON.
 # Usage: bench/ensemble_table.sh [BUILD_DIR (default build)] [MIN_TIME_SECONDS (default 0.5)]
@@ -15,7 +24,7 @@ min_time=${2:-0.5}
 json=$(mktemp)
 trap 'rm -f "$json"' EXIT
 "$build/bin/hmfnet_bench" \
-  --benchmark_filter='^(LeapFrogStep|GatherBound|SincosFloor|SincosLibc)/[0-9]+/100/|^YardstickStep/|^GatherLadder/' \
+  --benchmark_filter='^(LeapFrogStep|GatherBound|SincosFloor|SincosLibc)/[0-9]+/100/|^YardstickStep/|^GatherLadder/|^L1LoadAdd/|^StreamRead/' \
   --benchmark_min_time="$min_time" --benchmark_format=json >"$json" 2>/dev/null
 python3 - "$json" <<'PY'
 import json, re, sys
@@ -24,15 +33,40 @@ rate, ladder, angle_ns = {}, {}, {}
 for r in runs:
     name = re.sub(r"/real_time$", "", r["name"]).split("/")
     kind, args = name[0], tuple(int(a) for a in name[1:])
+    if r.get("error_occurred"):
+        continue
     if kind == "GatherLadder":
         ladder[args] = r["gathers_per_s"]
+    elif kind == "L1LoadAdd":
+        rate[(kind,) + args] = r["pairs_per_s"]
+    elif kind == "StreamRead":
+        rate[(kind,) + args] = r["bytes_per_s"]
     else:
         rate[(kind,) + args] = r["nnz_steps_per_s"]
     if "ns_per_angle" in r:
         angle_ns[(kind,) + args] = r["ns_per_angle"]
 G = 1e9
-print("%-9s %3s %2s %-7s %8s %8s %6s %8s %8s %7s %6s" % (
-    "N", "thr", "B", "prec", "hmfnet", "yardstk", "/yard", "gather", "floor", "/floor", "/B=1"))
+NNZ = {10000: 1e6, 1000000: 1e8}  # ER, mean degree 100: stored entries (to 0.1%)
+
+
+def bound(n, t, b, prec):
+    """The step's bound in stored entries x replicas x steps / s, and its limiting resource."""
+    nnz = NNZ[n]
+    record = 2 * b * (8 if prec == 0 else 4)
+    trig = rate[("SincosFloor", n, 100, b, t)]
+    t_sincos = nnz * b / trig  # SincosFloor counts per stored entry x replica
+    t_index = 4 * nnz / rate[("StreamRead", {10000: 3906, 1000000: 390625}[n], t)]
+    t_l1 = min(nnz * (-(-record // w) + 4 / w) / rate[("L1LoadAdd", w, t)]
+               for w in (16, 32, 64) if ("L1LoadAdd", w, t) in rate)
+    limit = "index stream" if t_index >= t_l1 else "L1 load+add"
+    t_step = t_sincos + max(t_index, t_l1)
+    share = t_sincos / t_step
+    return nnz * b / t_step, "%s (sincos %.0f%%)" % (limit, 100 * share)
+
+
+print("%-9s %3s %2s %-7s %8s %8s %6s %8s %8s %7s %6s  %s" % (
+    "N", "thr", "B", "prec", "hmfnet", "yardstk", "/yard", "old gath", "bound", "/bound",
+    "/B=1", "bound's limit"))
 for n in (10000, 1000000):
     for t in (1, 2):
         for prec in (0, 1):
@@ -41,17 +75,23 @@ for n in (10000, 1000000):
                 if ours is None:
                     continue
                 yard = rate.get(("YardstickStep", n, 100, t))
-                bound = rate.get(("GatherBound", n, 100, b, t, prec))
-                trig = rate.get(("SincosFloor", n, 100, b, t))
-                floor = 1 / (1 / bound + 1 / trig)  # the two costs add per step
+                gather = rate.get(("GatherBound", n, 100, b, t, prec))
+                top, limit = bound(n, t, b, prec)
                 base = rate.get(("LeapFrogStep", n, 100, 1, t, 0))
-                print("%-9d %3d %2d %-7s %8.3f %8.3f %6.2f %8.3f %8.3f %6.0f%% %6.2f" % (
+                print("%-9d %3d %2d %-7s %8.3f %8.3f %6.2f %8.3f %8.3f %6.0f%% %6.2f  %s" % (
                     n, t, b, ("float32", "float64")[prec == 0], ours / G, yard / G,
-                    ours / yard, bound / G, floor / G, 100 * ours / floor, ours / base))
+                    ours / yard, gather / G, top / G, 100 * ours / top, ours / base, limit))
 print("\nGnnz*replicas*steps/s. yardstk: the plain OpenMP CSR loop (1 replica, same threads); "
-      "gather: the gather bound of the same table and record width; floor: gather and one "
-      "sincos per rotor and replica, 1 / (1 / gather + 1 / sincos); /B=1: aggregate rate / "
-      "float64 B = 1 at the same N and threads.")
+      "old gath: the random-order gather microbenchmark of the same table (not a bound); "
+      "bound: the step's least time from the measured ceilings (script header), /bound the "
+      "fraction (above 100%: the bound is wrong); /B=1: aggregate rate / float64 B = 1 at the "
+      "same N and threads.")
+print("\nCeilings: L1 (load, add) pairs/s by width (1 | 2 threads): " + ", ".join(
+    "%d B %.2f | %.2f G" % (w, rate.get(("L1LoadAdd", w, 1), 0) / G,
+                             rate.get(("L1LoadAdd", w, 2), 0) / G) for w in (16, 32, 64)))
+print("Ceilings: index stream GB/s (1 | 2 threads): 4 MB %.1f | %.1f, 400 MB %.1f | %.1f" % (
+    rate[("StreamRead", 3906, 1)] / G, rate[("StreamRead", 3906, 2)] / G,
+    rate[("StreamRead", 390625, 1)] / G, rate[("StreamRead", 390625, 2)] / G))
 print("\nLarge N: rate at N = 10^6 / rate at N = 10^4 (same threads, B, precision):")
 for t in (1, 2):
     for prec in (0, 1):
