@@ -34,7 +34,7 @@ __attribute__((target("avx512f"))) double load_add_64(const double* x, int passe
   for (auto& v : a) v = _mm512_setzero_pd();
   for (int p = 0; p < passes; ++p) {
     for (std::size_t k = 0; k < k_l1_doubles; k += 64) {
-      for (int j = 0; j < 8; ++j) a[j] = _mm512_add_pd(a[j], _mm512_load_pd(x + k + 8 * j));
+      for (std::size_t j = 0; j < 8; ++j) a[j] = _mm512_add_pd(a[j], _mm512_load_pd(x + k + 8 * j));
     }
   }
   double out[8];
@@ -49,7 +49,7 @@ __attribute__((target("avx2"))) double load_add_32(const double* x, int passes) 
   for (auto& v : a) v = _mm256_setzero_pd();
   for (int p = 0; p < passes; ++p) {
     for (std::size_t k = 0; k < k_l1_doubles; k += 32) {
-      for (int j = 0; j < 8; ++j) a[j] = _mm256_add_pd(a[j], _mm256_load_pd(x + k + 4 * j));
+      for (std::size_t j = 0; j < 8; ++j) a[j] = _mm256_add_pd(a[j], _mm256_load_pd(x + k + 4 * j));
     }
   }
   double out[4];
@@ -64,7 +64,7 @@ double load_add_16(const double* x, int passes) {
   for (auto& v : a) v = _mm_setzero_pd();
   for (int p = 0; p < passes; ++p) {
     for (std::size_t k = 0; k < k_l1_doubles; k += 16) {
-      for (int j = 0; j < 8; ++j) a[j] = _mm_add_pd(a[j], _mm_load_pd(x + k + 2 * j));
+      for (std::size_t j = 0; j < 8; ++j) a[j] = _mm_add_pd(a[j], _mm_load_pd(x + k + 2 * j));
     }
   }
   double out[2];
@@ -121,9 +121,11 @@ __attribute__((target("avx512f"))) std::int32_t stream_64(const std::int32_t* x,
                                                           std::size_t count) {
   __m512i a[4];
   for (auto& v : a) v = _mm512_setzero_si512();
-  for (std::size_t k = 0; k < count; k += 64)
-    for (int j = 0; j < 4; ++j)
+  for (std::size_t k = 0; k < count; k += 64) {
+    for (std::size_t j = 0; j < 4; ++j) {
       a[j] = _mm512_add_epi32(a[j], _mm512_loadu_si512(static_cast<const void*>(x + k + 16 * j)));
+    }
+  }
   alignas(64) std::int32_t lanes[16];
   _mm512_store_si512(static_cast<void*>(lanes),
                      _mm512_add_epi32(_mm512_add_epi32(a[0], a[1]), _mm512_add_epi32(a[2], a[3])));
