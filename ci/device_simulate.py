@@ -5,8 +5,8 @@ with the CLI that ci/device_pack_cli.sh packed on the CPU machine:
   1. the same points (every <R>_t, SEM, energy error and momentum drift, per replica) and step
      counts as `--device cpu`, compared exactly (--json prints doubles to round-trip precision):
      float64 and float32, leapfrog and yoshida4, a K per replica (--K-across-replicas), on an ER
-     network (the sparse force) and on K_N with and without self-loops (the rank-one force, 13
-     and 16 replicas: the CPU's AVX-512 groups whole and partial);
+     network and a weighted one (the sparse force) and on K_N with and without self-loops (the
+     rank-one force, 13 and 16 replicas: the CPU's AVX-512 groups whole and partial);
   2. a checkpoint written by one device and resumed on the other (SIGTERM once the checkpoint of
      the second K exists, then --resume): the points of the uninterrupted run, both ways;
   3. the rate of both on one larger network (stored entries x replicas x steps / s), and the
@@ -21,6 +21,7 @@ the packed CLI where there is no GPU).
 """
 import json
 import os
+import random
 import signal
 import subprocess
 import sys
@@ -84,6 +85,18 @@ base = [net, "--K-over-Kc", "0.5,2", "--h", "0.05", "--T", "20", "--transient", 
 for extra in (["--integrator", "yoshida4"], ["--precision", "float32"],
               ["--K-across-replicas", "--record-stride", "7"]):
     same_points(f"ER: {device} = cpu " + " ".join(extra), base + extra)
+# A weighted network (Matrix Market, real symmetric, A_nm in [0.5, 2]): the weights on the device.
+weighted = os.path.join(work, "weighted.mtx")
+rng = random.Random(5)
+pairs = {(i, j) for i in range(1500) for j in range(i) if rng.random() < 20 / 1500}
+with open(weighted, "w") as f:
+    f.write(f"%%MatrixMarket matrix coordinate real symmetric\n1500 1500 {len(pairs)}\n")
+    for i, j in sorted(pairs):
+        f.write("%d %d %.17g\n" % (i + 1, j + 1, rng.uniform(0.5, 2.0)))
+for extra in ([], ["--precision", "float32"]):
+    same_points(f"weighted: {device} = cpu " + " ".join(extra),
+                [weighted, "--K-over-Kc", "2", "--h", "0.05", "--T", "20", "--transient", "5",
+                 "--seed", "3", "--replicas", "4", *extra])
 for loops, replicas in (("--self-loops", "16"), (None, "13")):
     kn = os.path.join(work, f"k{replicas}.h5")
     hmfnet("generate", "complete", "--n", 3000, *([loops] if loops else []), "--output", kn)

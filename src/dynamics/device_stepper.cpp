@@ -23,12 +23,11 @@ namespace {
 }
 
 // The first thing of `network` with `force` that the device does not take.
-void check_network(const DistributedNetwork& network, const CouplingForce& force) {
+void check_network(const CouplingForce& force) {
   if (dynamic_cast<const RankOneForce*>(&force) != nullptr) return;
   if (dynamic_cast<const NetworkForce*>(&force) == nullptr) {
     refuse(std::string("the ") + force.name() + " force is not on the device");
   }
-  if (network.weighted()) refuse("weighted sparse networks are not on the device yet");
 }
 
 }  // namespace
@@ -121,6 +120,7 @@ cuda::HostCsr host_csr(const DistributedNetwork& network) {
   csr.offsets.assign(rows.row_ptr.begin(), rows.row_ptr.end());
   csr.columns.reserve(rows.cols.size());
   for (const NodeIndex c : rows.cols) csr.columns.push_back(static_cast<std::int32_t>(c));
+  csr.weights = rows.weights;
   return csr;
 }
 
@@ -135,7 +135,7 @@ std::unique_ptr<EnsembleStepper> make_device_stepper(const DistributedNetwork& n
                                                      CouplingForce& force,
                                                      const SimulationParameters& params) {
   require_device_for(params);
-  check_network(network, force);
+  check_network(force);
   if (network.local_size() > INT32_MAX) refuse("more than 2^31 - 1 rows");
   const int replicas = static_cast<int>(lanes(params));
   if (const auto* rank_one = dynamic_cast<const RankOneForce*>(&force)) {
@@ -163,7 +163,7 @@ std::unique_ptr<EnsembleStepper> make_device_stepper(const DistributedNetwork& n
                                                      CouplingForce& force,
                                                      const SimulationParameters& params) {
   require_device_for(params);
-  check_network(network, force);
+  check_network(force);
   refuse(cuda_unavailable());
 }
 

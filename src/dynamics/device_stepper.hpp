@@ -8,8 +8,8 @@
 // order sums.
 //
 // Not on the device (each refused by make_device_stepper in one line, before any file is
-// written): more than one MPI rank, weighted sparse networks, node data, and methods that are
-// no kick-drift splitting (rk4).
+// written): more than one MPI rank, node data, and methods that are no kick-drift splitting
+// (rk4).
 #include <memory>
 #include <string>
 

@@ -298,6 +298,7 @@ cuda::HostCsr host_csr(const DistributedNetwork& network) {
   csr.rows = network.local_size();
   csr.offsets.assign(a.row_ptr.begin(), a.row_ptr.end());
   for (const NodeIndex c : a.cols) csr.columns.push_back(static_cast<std::int32_t>(c));
+  csr.weights = a.weights;
   return csr;
 }
 
@@ -305,7 +306,7 @@ cuda::HostCsr host_csr(const DistributedNetwork& network) {
 
 TEST_CASE(
     "the gpu tests' host stepper equals the CPU's splittings over NetworkForce and RankOneForce "
-    "bit for bit [ER N=300, K_N N=5000]",
+    "bit for bit [ER N=300 0/1 and weighted, K_N N=5000]",
     "[kernel_arithmetic]") {
   if (ParallelSession::ranks() > 1) {
     SUCCEED(
@@ -313,8 +314,6 @@ TEST_CASE(
         "CPU step is tested by the mpi label)");
     return;
   }
-  const Network net = step_network(false);
-  const DistributedNetwork network(net);
   const std::vector<std::pair<KickDriftSplitting, SplittingCoefficients>> methods = {
       {KickDriftSplitting("leapfrog", 2, leap_frog_coefficients().kicks,
                           leap_frog_coefficients().drifts),
@@ -327,20 +326,24 @@ TEST_CASE(
     ic.push_back({0.0, 0.6, static_cast<std::uint64_t>(b + 11), MomentumDistribution::waterbag});
     K.push_back(1.0 + 2.5 * b);  // a K per replica (--K-across-replicas)
   }
-  for (const ForcePrecision precision : {ForcePrecision::float64, ForcePrecision::float32}) {
-    for (const auto& [method, table] : methods) {
-      RotorState cpu = initial_state(network.first_row(), network.local_size(), ic);
-      gpu_test::HostEnsemble host(host_csr(network), 3, precision == ForcePrecision::float32);
-      host.K = K;
-      host.set_state(cpu.theta, cpu.p);
-      NetworkForce force(network, precision);
-      ForceEvaluation f(force);
-      f.update(cpu);
-      for (int step = 0; step < 25; ++step) method.step(cpu, 0.05, K, f);
-      host.advance(table, 0.05, 25);
-      INFO(to_string(precision) << ", " << method.name());
-      CHECK(bit_difference(host.theta, cpu.theta).count == 0);
-      CHECK(bit_difference(host.p, cpu.p).count == 0);
+  for (const bool weighted : {false, true}) {
+    const Network net = step_network(weighted);
+    const DistributedNetwork network(net);
+    for (const ForcePrecision precision : {ForcePrecision::float64, ForcePrecision::float32}) {
+      for (const auto& [method, table] : methods) {
+        RotorState cpu = initial_state(network.first_row(), network.local_size(), ic);
+        gpu_test::HostEnsemble host(host_csr(network), 3, precision == ForcePrecision::float32);
+        host.K = K;
+        host.set_state(cpu.theta, cpu.p);
+        NetworkForce force(network, precision);
+        ForceEvaluation f(force);
+        f.update(cpu);
+        for (int step = 0; step < 25; ++step) method.step(cpu, 0.05, K, f);
+        host.advance(table, 0.05, 25);
+        INFO(to_string(precision) << ", " << method.name() << (weighted ? ", weighted" : ""));
+        CHECK(bit_difference(host.theta, cpu.theta).count == 0);
+        CHECK(bit_difference(host.p, cpu.p).count == 0);
+      }
     }
   }
   // K_N with and without self-loops: RankOneForce's Z in 2048-row blocks (N = 5000: three

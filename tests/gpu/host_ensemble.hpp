@@ -82,13 +82,17 @@ class HostEnsemble {
         m_n(m_net.rows),
         m_b(replicas),
         m_w(static_cast<std::size_t>(replicas)),
-        m_float32(float32) {}
+        m_float32(float32) {
+    for (const double w : m_net.weights) m_weights32.push_back(static_cast<float>(w));
+  }
   static HostEnsemble complete(std::int64_t n, int replicas, bool self_loops = true) {
     return rank_one(std::vector<double>(static_cast<std::size_t>(n), 1.0), replicas, self_loops);
   }
   /// A = a a^T, with or without its diagonal (rank_one_force.hpp).
   static HostEnsemble rank_one(std::vector<double> a, int replicas, bool diagonal) {
-    HostEnsemble e(cuda::HostCsr{static_cast<std::int64_t>(a.size()), {}, {}}, replicas, false);
+    cuda::HostCsr none;
+    none.rows = static_cast<std::int64_t>(a.size());
+    HostEnsemble e(std::move(none), replicas, false);
     e.m_complete = true;
     e.m_self_loops = diagonal;
     e.m_a = std::move(a);
@@ -196,12 +200,13 @@ class HostEnsemble {
       for (std::size_t k = 0; k < cells(); ++k) {
         const std::size_t row = k / m_w;
         const int lane = static_cast<int>(k % m_w);
+        const bool weighted = !m_net.weights.empty();
         m_y[k] = m_float32 ? row_field<float, std::int64_t, std::int32_t>(
                                  m_net.offsets[row], m_net.offsets[row + 1], m_net.columns.data(),
-                                 nullptr, m_cs32.data(), m_b, lane)
+                                 weighted ? m_weights32.data() : nullptr, m_cs32.data(), m_b, lane)
                            : row_field<double, std::int64_t, std::int32_t>(
                                  m_net.offsets[row], m_net.offsets[row + 1], m_net.columns.data(),
-                                 nullptr, m_cs.data(), m_b, lane);
+                                 weighted ? m_net.weights.data() : nullptr, m_cs.data(), m_b, lane);
         m_g[k] =
             coupling_force(1.0 / static_cast<double>(m_n), m_cs[2 * k], m_cs[2 * k + 1], m_y[k]);
       }
@@ -242,6 +247,7 @@ class HostEnsemble {
   std::vector<double> m_a;  // rank-one: a_n
   std::vector<double> m_cs, m_g, m_z;
   std::vector<float> m_cs32;
+  std::vector<float> m_weights32;  // the weights narrowed as network_force.cpp narrows them
   std::vector<LocalField> m_y;
 };
 

@@ -19,12 +19,13 @@ namespace hmfnet::cuda {
 /// The gathered [cos, sin] table and the row sums in double or in float (ForcePrecision).
 enum class DevicePrecision { float64, float32 };
 
-/// A network's rows in CSR on the host: offsets has rows + 1 entries, columns index [0, rows).
-/// 0/1 entries (no weights).
+/// A network's rows in CSR on the host: offsets has rows + 1 entries, columns index [0, rows),
+/// weights A_nm (the float32 table sums them as floats, as network_force.cpp does) or none.
 struct HostCsr {
   std::int64_t rows = 0;
   std::vector<std::int64_t> offsets;
   std::vector<std::int32_t> columns;
+  std::vector<double> weights;  ///< one per column entry, or empty: 0/1 entries
 };
 
 /// Per replica, the sums the observables need (coupling_force.hpp): sum_n |y_n| (R = that /

@@ -23,7 +23,8 @@ template <typename T>
 struct ForceArgs {
   const std::int64_t* offsets;
   const std::int32_t* columns;
-  const T* table;  // cells x [cos, sin] in T
+  const T* weights;  // per entry in T, or nullptr: 0/1
+  const T* table;    // cells x [cos, sin] in T
   const double* cs;
   int replicas;
   std::int64_t cells;
@@ -40,8 +41,7 @@ __global__ void __launch_bounds__(1024) force_kernel(ForceArgs<T> a) {
   const std::int64_t row = k / a.replicas;
   const int lane = static_cast<int>(k % a.replicas);
   const LocalField y = row_field<T, std::int64_t, std::int32_t>(
-      a.offsets[row], a.offsets[row + 1], a.columns, static_cast<const T*>(nullptr), a.table,
-      a.replicas, lane);
+      a.offsets[row], a.offsets[row + 1], a.columns, a.weights, a.table, a.replicas, lane);
   const double c = a.cs[2 * k], s = a.cs[2 * k + 1];
   a.g[k] = coupling_force(a.inverse_n, c, s, y);
   if (a.terms != nullptr) {
@@ -100,37 +100,40 @@ struct SparseEnsemble::Impl : EnsembleCells {
   DevicePrecision precision;
   DeviceBuffer<std::int64_t> offsets;
   DeviceBuffer<std::int32_t> columns;
+  DeviceBuffer<double> weights64;  // float64 weighted networks
+  DeviceBuffer<float> weights32;   // float32 weighted networks (narrowed as on the CPU)
 
   // The force at the current [cos, sin] (g, and the terms when asked).
   void evaluate(bool with_terms) override {
     if (precision == DevicePrecision::float64) {
-      launch_force<double>(m_cs.data(), with_terms);
+      launch_force<double>(m_cs.data(), weights64.size() > 0 ? weights64.data() : nullptr,
+                           with_terms);
     } else {
-      launch_force<float>(m_cs32.data(), with_terms);
+      launch_force<float>(m_cs32.data(), weights32.size() > 0 ? weights32.data() : nullptr,
+                          with_terms);
     }
   }
 
   template <typename T>
-  void launch_force(const T* table, bool with_terms) {
-    const ForceArgs<T> a{offsets.data(),
-                         columns.data(),
-                         table,
-                         m_cs.data(),
-                         m_replicas,
-                         cells(),
-                         1.0 / static_cast<double>(m_rows),
-                         m_g.data(),
-                         with_terms ? m_terms.data() : nullptr};
+  void launch_force(const T* table, const T* weights, bool with_terms) {
+    const ForceArgs<T> a{offsets.data(), columns.data(),
+                         weights,        table,
+                         m_cs.data(),    m_replicas,
+                         cells(),        1.0 / static_cast<double>(m_rows),
+                         m_g.data(),     with_terms ? m_terms.data() : nullptr};
     force_kernel<T><<<cell_blocks(), tpb()>>>(a);
     check_launch("force kernel");
   }
 };
 
 DeviceMemory SparseEnsemble::memory(std::int64_t rows, std::int64_t entries, int replicas,
-                                    DevicePrecision precision) {
+                                    DevicePrecision precision, bool weighted) {
   DeviceMemory m;
+  const std::size_t weight_bytes = !weighted                               ? 0
+                                   : precision == DevicePrecision::float64 ? sizeof(double)
+                                                                           : sizeof(float);
   m.needed = static_cast<std::size_t>(rows + 1) * sizeof(std::int64_t) +
-             static_cast<std::size_t>(entries) * sizeof(std::int32_t) +
+             static_cast<std::size_t>(entries) * (sizeof(std::int32_t) + weight_bytes) +
              EnsembleCells::bytes(rows, replicas, precision == DevicePrecision::float32);
   std::size_t total = 0;
   check(cudaMemGetInfo(&m.free, &total), "cudaMemGetInfo");
@@ -161,13 +164,26 @@ std::unique_ptr<SparseEnsemble::Impl> copied_network(const HostCsr& network, int
   }
   require_device();
   const auto entries = static_cast<std::int64_t>(network.columns.size());
-  require_memory(SparseEnsemble::memory(network.rows, entries, replicas, precision).needed,
-                 "the network's ensemble");
+  const bool weighted = !network.weights.empty();
+  if (weighted && network.weights.size() != network.columns.size()) {
+    throw DeviceError("device ensemble: one weight per column entry");
+  }
+  require_memory(
+      SparseEnsemble::memory(network.rows, entries, replicas, precision, weighted).needed,
+      "the network's ensemble");
   auto e =
       std::make_unique<SparseEnsemble::Impl>(network.rows, replicas, precision, threads_per_block);
   e->entries = entries;
   e->offsets.upload(network.offsets.data(), network.offsets.size());
   e->columns.upload(network.columns.data(), network.columns.size());
+  if (weighted && precision == DevicePrecision::float64) {
+    e->weights64.upload(network.weights.data(), network.weights.size());
+  } else if (weighted) {
+    std::vector<float> narrow(network.weights.size());
+    for (std::size_t k = 0; k < narrow.size(); ++k)
+      narrow[k] = static_cast<float>(network.weights[k]);
+    e->weights32.upload(narrow.data(), narrow.size());
+  }
   e->allocate();
   return e;
 }

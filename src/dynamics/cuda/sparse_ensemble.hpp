@@ -31,7 +31,7 @@ class SparseEnsemble : public DeviceEnsemble {
 
   /// The memory a network of `rows` rows, `entries` stored entries and `replicas` lanes needs.
   static DeviceMemory memory(std::int64_t rows, std::int64_t entries, int replicas,
-                             DevicePrecision precision);
+                             DevicePrecision precision, bool weighted = false);
 
   std::int64_t entries() const;
 
