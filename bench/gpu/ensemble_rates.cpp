@@ -120,8 +120,11 @@ Row sparse_row(const Ceilings& c, std::int64_t n, int replicas, cuda::DevicePrec
   return r;
 }
 
-Row complete_row(const Ceilings& c, std::int64_t n, int replicas, std::int64_t steps) {
-  cuda::CompleteGraphEnsembles e({{n, replicas, 1.0, steps * 10, 0}});
+// threads: per block; with few replicas, 256 lets a replica's 2048 tiles spread over a cluster of
+// 8 blocks (one tile a thread), 512 over 4 (complete_graph_ensembles.cu: automatic_cluster).
+Row complete_row(const Ceilings& c, std::int64_t n, int replicas, std::int64_t steps,
+                 int threads = 512) {
+  cuda::CompleteGraphEnsembles e({{n, replicas, 1.0, steps * 10, 0}}, threads);
   const auto cells = static_cast<std::size_t>(n) * static_cast<std::size_t>(replicas);
   std::vector<double> theta, p;
   random_state(cells, theta, p);
@@ -132,7 +135,7 @@ Row complete_row(const Ceilings& c, std::int64_t n, int replicas, std::int64_t s
     e.synchronize();
   });
   Row r;
-  r.kind = "complete graph";
+  r.kind = "complete graph t" + std::to_string(threads);
   r.precision = "float64";
   r.n = n;
   r.replicas = replicas;
@@ -228,12 +231,13 @@ int main(int argc, char** argv) {
     rows.push_back(sparse_row(c, 1000000, 8, P::float32, 100 / scale));
     if (!quick) rows.push_back(sparse_row(c, 10000000, 1, P::float64, 30));
     rows.push_back(complete_row(c, 100000, 16, 2000 / scale));
+    rows.push_back(complete_row(c, 100000, 16, 2000 / scale, 256));
     rows.push_back(complete_row(c, 20000, 64, 10000 / scale));
     rows.push_back(complete_row(c, 64, 64, 20000 / scale));
     rows.push_back(rank_one_row(c, 100000, 16, 2000 / scale));
     rows.push_back(rank_one_row(c, 20000, 64, 2000 / scale));
     rows.push_back(rank_one_row(c, 1000, 32, 2000 / scale));
-    std::printf("\n%-16s %-8s %9s %3s %12s %12s %6s %10s %9s  %s\n", "kind", "prec", "N", "B",
+    std::printf("\n%-20s %-8s %9s %3s %12s %12s %6s %10s %9s  %s\n", "kind", "prec", "N", "B",
                 "rate (G/s)", "bound (G/s)", "frac", "step (us)", "mem (MB)", "limit");
     std::ofstream csv;
     if (!out.empty()) {
@@ -241,7 +245,7 @@ int main(int argc, char** argv) {
       csv << "kind,precision,N,replicas,rate,bound,fraction,step_us,memory_mb,limit\n";
     }
     for (const Row& r : rows) {
-      std::printf("%-16s %-8s %9lld %3d %12.3f %12.3f %5.0f%% %10.2f %9.1f  %s\n", r.kind.c_str(),
+      std::printf("%-20s %-8s %9lld %3d %12.3f %12.3f %5.0f%% %10.2f %9.1f  %s\n", r.kind.c_str(),
                   r.precision.c_str(), static_cast<long long>(r.n), r.replicas, r.rate / 1e9,
                   r.bound / 1e9, 100.0 * r.rate / r.bound, r.step_us, r.memory_mb, r.limit.c_str());
       if (csv) {
