@@ -11,8 +11,15 @@ verification/gpu/qss_lifetime_gpu.cpp (ci/device_check.sh). Two readings of the 
 Both are read globally (all N) and locally (successive pairs of N), so that a drift of the
 exponent with N shows in either.
 
-  python3 qss_lifetime_gpu.py --raw DIR --h5 F.h5 [--commit C]   # device output -> HDF5
+  python3 qss_lifetime_gpu.py --raw DIR --h5 F.h5 [--commit C] [--extend OLD.h5]
+                                                                 # device output -> HDF5
   python3 qss_lifetime_gpu.py --data DIR --out FIGDIR            # HDF5 -> figure and table
+With --extend, the sizes of OLD.h5 are kept where the new run went no further; a size in both
+keeps the longer run, after its records over the common stretch are checked equal (bit for
+bit in the float32 the file stores)
+(the same seeds and the fixed-order sums of complete_graph_ensembles.cu give the same bits on
+every card and cluster size: a run that differs is not the same experiment and is refused).
+Each size's group names the device, commit and wall time of the run it comes from.
 The second form reads DIR/qss_lifetime_gpu.h5 (and DIR/qss_lifetime.h5, the CPU's N = 200 ..
 1600, when present) and prints the table the report cites.
 """
@@ -46,38 +53,96 @@ def m_eq(U):
     return brentq(phi, 1e-9, 1.0 - 1e-12, xtol=1e-15)
 
 
-def convert(raw, out, commit):
+RUN_KEYS = ("device", "budget_s", "wall_s")
+SHARED_KEYS = ("h", "U", "K", "replicas", "lives", "seeds")
+
+
+def read_raw(raw, commit):
+    """The device check's qss_gpu.json and qss_gpu.f64 as {N: (group attrs, R, E)}."""
     meta = json.load(open(os.path.join(raw, "qss_gpu.json")))
     blob = np.fromfile(os.path.join(raw, "qss_gpu.f64"), dtype="<f8")
     B, records = meta["replicas"], meta["records"]
     expected = 2 * B * records * len(meta["sizes"])
     if blob.size != expected:
         raise SystemExit(f"{raw}/qss_gpu.f64 holds {blob.size} doubles, its JSON describes {expected}")
+    sizes, at = {}, 0
+    for s in meta["sizes"]:
+        R = blob[at:at + B * records].reshape(B, records)
+        E = blob[at + B * records:at + 2 * B * records].reshape(B, records)
+        at += 2 * B * records
+        w = s["records_written"]
+        attrs = {k: s[k] for k in ("N", "record_every", "steps_planned", "steps_done", "records_written")}
+        attrs.update({k: meta[k] for k in RUN_KEYS}, git_commit=commit)
+        # float32 keeps R to 1e-7, far below its replica noise (~1e-2); the energy as its first
+        # record (float64) and the relative change since (float32).
+        drift = (E[:, :w] - E[:, :1]) / np.abs(E[:, :1])
+        sizes[s["N"]] = (attrs, R[:, :w].astype("<f4"), E[:, 0], drift.astype("<f4"))
+    return meta, sizes
+
+
+def read_h5(path):
+    """An earlier conversion as (shared attrs, {N: (group attrs, R, E0, drift)}); a file written
+    before the groups named their run takes the run's attributes from the file's."""
+    with h5py.File(path, "r") as f:
+        top = dict(f.attrs)
+        sizes = {}
+        for k in f:
+            g = f[k]
+            attrs = dict(g.attrs)
+            for key in RUN_KEYS + ("git_commit",):
+                if key not in attrs:
+                    attrs[key] = top[key]
+            sizes[int(attrs["N"])] = (attrs, g["R_mean"][()], g["energy_first"][()],
+                                      g["energy_drift"][()])
+    return top, sizes
+
+
+def merge(old, new):
+    """The sizes of both; a size in both keeps the run with more steps, once the records the two
+    share are equal bit for bit."""
+    merged = dict(old)
+    for n, run in new.items():
+        if n in old:
+            a, b = old[n][1], run[1]
+            m = min(a.shape[1], b.shape[1])
+            if old[n][0]["record_every"] != run[0]["record_every"] or \
+                    not np.array_equal(a[:, :m], b[:, :m]):
+                raise SystemExit(f"N = {n}: the new run's first {m} records differ from the "
+                                 "stored run's; not the same experiment, not merged")
+            if run[0]["steps_done"] <= old[n][0]["steps_done"]:
+                continue
+        merged[n] = run
+    return merged
+
+
+def convert(raw, out, commit, extend=None):
+    meta, sizes = read_raw(raw, commit)
+    if extend:
+        top, old = read_h5(extend)
+        for key in SHARED_KEYS:
+            if top[key] != meta[key]:
+                raise SystemExit(f"{extend} has {key} = {top[key]}, {raw} {meta[key]}: not merged")
+        sizes = merge(old, sizes)
     tmp = tempfile.NamedTemporaryFile(dir=os.path.dirname(os.path.abspath(out)), suffix=".h5",
                                       delete=False).name
     try:
         with h5py.File(tmp, "w") as f:
-            for key in ("device", "h", "U", "K", "replicas", "lives", "budget_s", "wall_s", "seeds"):
+            for key in SHARED_KEYS:
                 f.attrs[key] = meta[key]
-            f.attrs["git_commit"] = commit
+            runs = sorted({(str(a["device"]), str(a["git_commit"]), float(a["wall_s"]))
+                           for a, *_ in sizes.values()})
+            f.attrs["device"] = "; ".join(sorted({d for d, _, _ in runs}))
+            f.attrs["git_commit"] = "; ".join(sorted({c for _, c, _ in runs}))
+            f.attrs["wall_s"] = sum(w for _, _, w in runs)
             f.attrs["program"] = "verification/gpu/qss_lifetime_gpu.cpp via ci/device_check.sh"
-            at = 0
-            for s in meta["sizes"]:
-                R = blob[at:at + B * records].reshape(B, records)
-                E = blob[at + B * records:at + 2 * B * records].reshape(B, records)
-                at += 2 * B * records
-                w = s["records_written"]
-                g = f.create_group(f"N{s['N']}")
-                # float32 keeps R to 1e-7, far below its replica noise (~1e-2); the energy as its
-                # first record (float64) and the relative change since (float32).
-                g.create_dataset("R_mean", data=R[:, :w].astype("<f4"), compression="gzip",
-                                 shuffle=True)
-                g.create_dataset("energy_first", data=E[:, 0])
-                drift = (E[:, :w] - E[:, :1]) / np.abs(E[:, :1])
-                g.create_dataset("energy_drift", data=drift.astype("<f4"), compression="gzip",
-                                 shuffle=True)
-                for key in ("N", "record_every", "steps_planned", "steps_done", "records_written"):
-                    g.attrs[key] = s[key]
+            for n in sorted(sizes, reverse=True):
+                attrs, R, E0, drift = sizes[n]
+                g = f.create_group(f"N{n}")
+                g.create_dataset("R_mean", data=R, compression="gzip", shuffle=True)
+                g.create_dataset("energy_first", data=E0)
+                g.create_dataset("energy_drift", data=drift, compression="gzip", shuffle=True)
+                for key, value in attrs.items():
+                    g.attrs[key] = value
         os.chmod(tmp, 0o644)
         os.replace(tmp, out)
     finally:
@@ -116,6 +181,7 @@ class Size:
         self.U = U.mean()
         self.M_eq = m_eq(self.U)
         self.energy_error = float(np.max(np.abs(g["energy_drift"][()])))
+        self.device = str(g.attrs.get("device", ""))
 
     def life(self, chosen=None):
         R = self.R if chosen is None else self.R[chosen]
@@ -197,7 +263,7 @@ def analyse(path):
         rows.append(dict(N=s.N, U=s.U, M_eq=s.M_eq, life=life,
                          se=np.nanstd(boots, ddof=1) if passed > 1 else np.nan,
                          passed=int(passed), T=s.T, planned=s.planned,
-                         energy_error=s.energy_error))
+                         energy_error=s.energy_error, device=s.device.split(",")[0]))
     measured = [r for r in rows if np.isfinite(r["life"]) and r["passed"] == BOOTSTRAP]
     ns = np.array([r["N"] for r in measured], float)
     lives = np.array([r["life"] for r in measured])
@@ -210,23 +276,35 @@ def analyse(path):
         pair = [s for s in sizes if s.N in (a["N"], b["N"])]
         alpha, alpha_se = collapse_with_error(pair, a["N"] + b["N"])
         local.append(dict(N1=a["N"], N2=b["N"], exponent=k, se=e, alpha=alpha, alpha_se=alpha_se))
+    # A size censored after the last measured one still bounds the local exponent from below:
+    # its life exceeds its run's T.
+    censored = []
+    if measured:
+        last = measured[-1]
+        for r in rows:
+            if r["N"] > last["N"] and not np.isfinite(r["life"]):
+                span = np.log(r["N"] / last["N"])
+                censored.append(dict(N1=last["N"], N2=r["N"], T=r["T"],
+                                     exponent=np.log(r["T"] / last["life"]) / span,
+                                     se=last["se"] / last["life"] / span))
     # The global collapse over the sizes whose life was measured: a censored curve ends before
     # its relaxation, and would restrict the common range to the early part of every curve.
     alpha, alpha_se = collapse_with_error([s for s in sizes if s.N in set(ns.astype(int))], 1)
     return dict(attrs=attrs, sizes=sizes, rows=rows, slope=slope, slope_se=slope_se,
-                local=local, alpha=alpha, alpha_se=alpha_se)
+                local=local, censored=censored, alpha=alpha, alpha_se=alpha_se)
 
 
 def report(a):
     print(f"device: {a['attrs']['device']}; commit {a['attrs']['git_commit']}; "
           f"wall {a['attrs']['wall_s']:.0f} s; {a['attrs']['replicas']} replicas per N")
-    print("| N | U | M_eq | life (half-way) | se | resamples passed | T run / planned | max |dH/H| |")
-    print("|---|---|---|---|---|---|---|---|")
+    print("| N | U | M_eq | life (half-way) | se | resamples passed | T run / planned | max |dH/H| | run on |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for r in a["rows"]:
         life = f"{r['life']:.4g}" if np.isfinite(r["life"]) else f"> {r['T']:.4g} (censored)"
         se = f"{r['se']:.3g}" if np.isfinite(r["se"]) else "-"
         print(f"| {r['N']} | {r['U']:.4f} | {r['M_eq']:.4f} | {life} | {se} | {r['passed']} of "
-              f"{BOOTSTRAP} | {r['T']:.4g} / {r['planned']:.4g} | {r['energy_error']:.1e} |")
+              f"{BOOTSTRAP} | {r['T']:.4g} / {r['planned']:.4g} | {r['energy_error']:.1e} | "
+              f"{r['device']} |")
     print(f"\nhalf-way lives: N^({a['slope']:.3f} +- {a['slope_se']:.3f}) over the measured N; "
           f"collapse of phi_N(t / N^alpha) over the same N: alpha = {a['alpha']:.3f} +- {a['alpha_se']:.3f}")
     print("| N1 -> N2 | local exponent (half-way) | local collapse alpha |")
@@ -234,6 +312,9 @@ def report(a):
     for l in a["local"]:
         print(f"| {l['N1']} -> {l['N2']} | {l['exponent']:.3f} +- {l['se']:.3f} | "
               f"{l['alpha']:.3f} +- {l['alpha_se']:.3f} |")
+    for c in a["censored"]:
+        print(f"| {c['N1']} -> {c['N2']} | > {c['exponent']:.3f} +- {c['se']:.3f} (life at "
+              f"{c['N2']} > T = {c['T']:.4g}) | - |")
 
 
 def figure(a, data_dir, out_dir):
@@ -294,13 +375,14 @@ def main():
     p.add_argument("--raw")
     p.add_argument("--h5")
     p.add_argument("--commit", default="unknown")
+    p.add_argument("--extend", help="an earlier HDF5 whose sizes the new run extends")
     p.add_argument("--data")
     p.add_argument("--out")
     args = p.parse_args()
     if args.raw:
         if not args.h5:
             p.error("--raw needs --h5")
-        convert(args.raw, args.h5, args.commit)
+        convert(args.raw, args.h5, args.commit, args.extend)
         return
     if not (args.data and args.out):
         p.error("give --raw DIR --h5 F, or --data DIR --out FIGDIR")

@@ -6,7 +6,9 @@
     series rising and falling, and NaN where the series never passes;
   - power_law on an exact power law;
   - the conversion of the device check's output: datasets, attributes, the records kept, and a
-    refusal when the binary does not match its JSON.
+    refusal when the binary does not match its JSON;
+  - --extend: a longer run of a size replaces the stored one, the other sizes and their run's
+    device stay, and a run whose shared records differ is refused with no file left.
 Usage: test_qss_lifetime_gpu.py PAPER_DIR
 """
 import json
@@ -32,6 +34,20 @@ def passage_time_hpp(x, dt, width, target):
         if sign * (window / width - half) >= 0.0:
             return dt * (i + 1.0 - 0.5 * width)
     return math.nan
+
+
+def write_raw(folder, device, sizes, B, records, shift=0.0):
+    """A device check's qss_gpu.json and qss_gpu.f64: R = N + (replica, record) / 100 + shift,
+    the energy -N/2 (1 + 1e-6 record)."""
+    meta = {"device": device, "h": 0.1, "U": 0.69, "K": 1, "replicas": B, "lives": 3,
+            "budget_s": 1, "wall_s": 1, "records": records, "seeds": "s", "sizes": sizes}
+    json.dump(meta, open(os.path.join(folder, "qss_gpu.json"), "w"))
+    blob = []
+    for s in sizes:
+        R = np.arange(B * records, dtype=float).reshape(B, records) / 100 + s["N"] + shift
+        E = -np.full((B, records), 0.5 * s["N"]) * (1 + 1e-6 * np.arange(records))
+        blob += [R.ravel(), E.ravel()]
+    np.concatenate(blob).astype("<f8").tofile(os.path.join(folder, "qss_gpu.f64"))
 
 
 def main():
@@ -68,15 +84,7 @@ def main():
                   "records_written": 5},
                  {"N": 2000, "record_every": 20, "steps_planned": 100, "steps_done": 60,
                   "records_written": 3}]
-        meta = {"device": "test", "h": 0.1, "U": 0.69, "K": 1, "replicas": B, "lives": 3,
-                "budget_s": 1, "wall_s": 1, "records": records, "seeds": "s", "sizes": sizes}
-        json.dump(meta, open(os.path.join(tmp, "qss_gpu.json"), "w"))
-        blob = []
-        for s in sizes:
-            R = np.arange(B * records, dtype=float).reshape(B, records) / 100 + s["N"]
-            E = -np.full((B, records), 0.5 * s["N"]) * (1 + 1e-6 * np.arange(records))
-            blob += [R.ravel(), E.ravel()]
-        np.concatenate(blob).astype("<f8").tofile(os.path.join(tmp, "qss_gpu.f64"))
+        write_raw(tmp, "card A", sizes, B, records)
         out = os.path.join(tmp, "q.h5")
         q.convert(tmp, out, "abc")
         with h5py.File(out, "r") as f:
@@ -85,6 +93,7 @@ def main():
             assert abs(f["N1000/R_mean"][1, 2] - (1000 + 7 / 100)) < 1e-3
             assert abs(f["N2000/energy_drift"][0, 2] + 2e-6) < 1e-9
             assert f["N2000"].attrs["steps_done"] == 60
+            assert f["N2000"].attrs["device"] == "card A"
         np.zeros(3).tofile(os.path.join(tmp, "qss_gpu.f64"))
         try:
             q.convert(tmp, os.path.join(tmp, "bad.h5"), "abc")
@@ -94,7 +103,36 @@ def main():
             raise AssertionError("a binary that does not match its JSON was accepted")
         assert not os.path.exists(os.path.join(tmp, "bad.h5"))
         assert sorted(os.listdir(tmp)) == ["q.h5", "qss_gpu.f64", "qss_gpu.json"], os.listdir(tmp)
-    print("qss_lifetime_gpu.py: m_eq, half_way, power_law and convert as ported")
+
+        # N = 2000 run further on another card: its first 3 records are the stored ones.
+        longer = os.path.join(tmp, "longer")
+        os.mkdir(longer)
+        write_raw(longer, "card B", [dict(sizes[1], steps_done=100, records_written=5)], B, records)
+        merged = os.path.join(tmp, "merged.h5")
+        q.convert(longer, merged, "def", extend=out)
+        with h5py.File(merged, "r") as f:
+            assert sorted(f) == ["N1000", "N2000"]
+            assert f["N2000/R_mean"].shape == (B, 5) and f["N2000"].attrs["device"] == "card B"
+            assert f["N2000"].attrs["git_commit"] == "def"
+            assert f["N1000"].attrs["device"] == "card A" and f["N1000"].attrs["git_commit"] == "abc"
+            assert f.attrs["device"] == "card A; card B"
+        # A shorter run of a size keeps the stored one.
+        q.convert(longer, os.path.join(tmp, "again.h5"), "ghi", extend=merged)
+        with h5py.File(os.path.join(tmp, "again.h5"), "r") as f:
+            assert f["N2000"].attrs["git_commit"] == "def"
+        # The same size started elsewhere: not the same experiment.
+        other = os.path.join(tmp, "other")
+        os.mkdir(other)
+        write_raw(other, "card C", [dict(sizes[1], steps_done=100, records_written=5)], B, records,
+                  shift=1e-3)
+        try:
+            q.convert(other, os.path.join(tmp, "mixed.h5"), "jkl", extend=out)
+        except SystemExit as e:
+            assert "differ" in str(e), e
+        else:
+            raise AssertionError("a run whose shared records differ was merged")
+        assert not os.path.exists(os.path.join(tmp, "mixed.h5"))
+    print("qss_lifetime_gpu.py: m_eq, half_way, power_law, convert and --extend as ported")
 
 
 if __name__ == "__main__":
