@@ -10,7 +10,10 @@
 #
 # Environment: OUT (logs; ./device-out when unset), HMFNET_DEVICE_BUILD (scratch build folder,
 # /tmp/hmfnet-device-build), HMFNET_DEVICE_BUDGET_S (seconds for the whole check, 450: each step's
-# time limit is cut to what is left of it, so the table is printed inside an 8-minute call).
+# time limit is cut to what is left of it, so the table is printed inside an 8-minute call);
+# the campaign's HMFNET_QSS_SIZES, HMFNET_QSS_LIVES (3), HMFNET_QSS_LIMIT_S (its share, 260 s)
+# and HMFNET_QSS_RESUME (a qss_gpu_resume.bin to go on from: an earlier call's stays at
+# $build/qss/ on a warm machine).
 #
 # A new check is one function that runs something from "$build" and calls `record` once per
 # result, added to the list `checks` below. $OUT brings back at most 8 files, two folders deep:
@@ -171,19 +174,55 @@ check_bench() {
 # qss_gpu.json and qss_gpu.f64 for paper/scripts/qss_lifetime_gpu.py. Its own wall budget is
 # what the check's budget leaves, less 30 s for writing and the table.
 check_qss() {
-  local log="$OUT/runs.log" rc=0 t0=$EPOCHREALTIME limit budget
+  local log="$OUT/runs.log" rc=0 t0=$EPOCHREALTIME limit budget dir="$build/qss" f
+  local resume=()
   limit=$(limit_for "${HMFNET_QSS_LIMIT_S:-260}")
   budget=$((limit - 30))
   [ "$budget" -gt 10 ] || { record "QSS campaign" skip 0 "no time left in the budget"; return 0; }
-  echo "== hmfnet_gpu_qss_lifetime (budget $budget s)" >>"$log"
+  # HMFNET_QSS_RESUME: a resume file of an earlier campaign (its --replicas and --lives).
+  [ -z "${HMFNET_QSS_RESUME:-}" ] || resume=(--resume "$HMFNET_QSS_RESUME")
+  echo "== hmfnet_gpu_qss_lifetime (budget $budget s) ${resume[*]}" >>"$log"
+  # The run's folder stays in the build folder: its resume file (up to 10 MB a size) for a later
+  # call on the same machine; the records come back through $OUT.
+  mkdir -p "$dir"
+  rm -f "$dir"/qss_gpu.json "$dir"/qss_gpu.f64
   bounded "$limit" "$log" "$bin_dir/hmfnet_gpu_qss_lifetime" \
-    --sizes "${HMFNET_QSS_SIZES:-20000,10000,5000,2000,1600,1000}" --replicas 32 --lives 3 \
-    --budget-s "$budget" --out "$OUT" || rc=$?
+    --sizes "${HMFNET_QSS_SIZES:-20000,10000,5000,2000,1600,1000}" --replicas 32 \
+    --lives "${HMFNET_QSS_LIVES:-3}" \
+    --budget-s "$budget" --out "$dir" "${resume[@]}" || rc=$?
+  for f in qss_gpu.json qss_gpu.f64; do [ ! -f "$dir/$f" ] || cp "$dir/$f" "$OUT/"; done
+  [ ! -f "$dir/qss_gpu_resume.bin" ] || echo "resume file: $dir/qss_gpu_resume.bin" >>"$log"
   case $rc in
     0) record "QSS campaign" pass "$(elapsed_since "$t0")" "qss_gpu.json, qss_gpu.f64" ;;
     77) record "QSS campaign" skip "$(elapsed_since "$t0")" "no device" ;;
     *) record "QSS campaign" fail "$(elapsed_since "$t0")" "$(exit_text "$rc"), see runs.log" ;;
   esac
+}
+
+# shellcheck disable=SC2317  # called through the list checks
+# The campaign's resume (qss_resume_file.hpp): N = 1000 stopped after 3 launches and resumed
+# from its qss_gpu_resume.bin must write the records of the same run uninterrupted, bit for bit.
+check_qss_resume() {
+  local log="$OUT/runs.log" rc=0 t0=$EPOCHREALTIME dir="$build/qss-resume" limit
+  local run=("$bin_dir/hmfnet_gpu_qss_lifetime" --sizes 1000 --replicas 8 --lives 0.3 --chunk 2000)
+  limit=$(limit_for 60)
+  rm -rf "$dir" && mkdir -p "$dir/whole" "$dir/first" "$dir/rest"
+  echo "== QSS resume: N = 1000, 8 replicas, stopped after 3 launches, resumed" >>"$log"
+  bounded "$limit" "$log" "${run[@]}" --out "$dir/whole" || rc=$?
+  [ "$rc" -ne 0 ] || bounded "$limit" "$log" "${run[@]}" --chunks 3 --out "$dir/first" || rc=$?
+  [ "$rc" -ne 0 ] || bounded "$limit" "$log" "${run[@]}" --resume "$dir/first/qss_gpu_resume.bin" \
+    --out "$dir/rest" || rc=$?
+  if [ "$rc" -eq 77 ]; then
+    record "QSS resume" skip "$(elapsed_since "$t0")" "no device"
+  elif [ "$rc" -ne 0 ]; then
+    record "QSS resume" fail "$(elapsed_since "$t0")" "$(exit_text "$rc"), see runs.log"
+  elif [ -f "$dir/rest/qss_gpu_resume.bin" ] || [ ! -f "$dir/first/qss_gpu_resume.bin" ]; then
+    record "QSS resume" fail "$(elapsed_since "$t0")" "resume file where none belongs, or none where one does"
+  elif cmp "$dir/whole/qss_gpu.f64" "$dir/rest/qss_gpu.f64" >>"$log" 2>&1; then
+    record "QSS resume" pass "$(elapsed_since "$t0")" "records equal to the uninterrupted run's"
+  else
+    record "QSS resume" fail "$(elapsed_since "$t0")" "records differ from the uninterrupted run's"
+  fi
 }
 
 # shellcheck disable=SC2317  # called through the list checks
@@ -204,7 +243,7 @@ check_simulate() {
   esac
 }
 
-checks=(check_gpu_label check_simulate check_bench check_qss)
+checks=(check_gpu_label check_simulate check_bench check_qss_resume check_qss)
 
 echo "== device"
 show_device
@@ -224,7 +263,10 @@ else
   # The benchmark and the campaign as prepared on the CPU machine, where they were built.
   bin_dir="$prepared/bin"
   if [ -x "$bin_dir/hmfnet_gpu_ensemble_rates" ]; then check_bench || record check_bench fail - "exit $?"; fi
-  if [ -x "$bin_dir/hmfnet_gpu_qss_lifetime" ]; then check_qss || record check_qss fail - "exit $?"; fi
+  if [ -x "$bin_dir/hmfnet_gpu_qss_lifetime" ]; then
+    check_qss_resume || record check_qss_resume fail - "exit $?"
+    check_qss || record check_qss fail - "exit $?"
+  fi
 fi
 
 [ -f "$OUT/simulate.log" ] && { echo; grep -E '^(pass|FAIL) ' "$OUT/simulate.log" || true; }

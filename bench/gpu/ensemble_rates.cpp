@@ -1,5 +1,6 @@
 // The device's step rates beside the bounds measured in the same run (device_bounds.hpp):
-//   sparse, directed ER G(N, p = d / N), d = 100: stored entries x replicas x steps / s;
+//   sparse, directed ER G(N, p = d / N), d = 100: stored entries x replicas x steps / s, with
+//   1 or 4 threads summing a row ("r1", "r4": sparse_ensemble.hpp);
 //   the complete graph (block per replica): rotors x replicas x steps / s, and the per-step
 //   time of a tiny N (the launch-independent cost: the block's syncs and Z's tree).
 // Each rate is the fastest of 3 timed runs after a warm-up (host clock around a synchronised
@@ -77,9 +78,11 @@ struct Ceilings {
   int sms = 1;
 };
 
+// per_row: threads summing a cell's row (sparse_ensemble.hpp), 0: the stepper's own choice.
 Row sparse_row(const Ceilings& c, std::int64_t n, int replicas, cuda::DevicePrecision precision,
-               std::int64_t steps) {
+               std::int64_t steps, int per_row = 0) {
   cuda::SparseEnsemble e = cuda::SparseEnsemble::directed_er(n, 100.0, 1, replicas, precision);
+  if (per_row > 0) e.set_threads_per_row(per_row);
   const auto cells = static_cast<std::size_t>(n) * static_cast<std::size_t>(replicas);
   std::vector<double> theta, p;
   random_state(cells, theta, p);
@@ -90,7 +93,7 @@ Row sparse_row(const Ceilings& c, std::int64_t n, int replicas, cuda::DevicePrec
     e.synchronize();
   });
   Row r;
-  r.kind = "sparse ER d=100";
+  r.kind = "sparse ER d=100 r" + std::to_string(e.threads_per_row());
   r.precision = precision == cuda::DevicePrecision::float64 ? "float64" : "float32";
   r.n = n;
   r.replicas = replicas;
@@ -230,6 +233,11 @@ int main(int argc, char** argv) {
     rows.push_back(sparse_row(c, 1000000, 1, P::float32, 400 / scale));
     rows.push_back(sparse_row(c, 1000000, 8, P::float32, 100 / scale));
     if (!quick) rows.push_back(sparse_row(c, 10000000, 1, P::float64, 30));
+    // The other threads-a-row choice of the rows above, in the same run.
+    rows.push_back(sparse_row(c, 10000, 1, P::float64, 4000 / scale, 1));
+    rows.push_back(sparse_row(c, 1000000, 1, P::float64, 400 / scale, 1));
+    rows.push_back(sparse_row(c, 1000000, 1, P::float32, 400 / scale, 1));
+    rows.push_back(sparse_row(c, 1000000, 8, P::float64, 100 / scale, 4));
     rows.push_back(complete_row(c, 100000, 16, 2000 / scale));
     rows.push_back(complete_row(c, 100000, 16, 2000 / scale, 256));
     rows.push_back(complete_row(c, 20000, 64, 10000 / scale));

@@ -11,7 +11,7 @@ verification/gpu/qss_lifetime_gpu.cpp (ci/device_check.sh). Two readings of the 
 Both are read globally (all N) and locally (successive pairs of N), so that a drift of the
 exponent with N shows in either.
 
-  python3 qss_lifetime_gpu.py --raw DIR --h5 F.h5 [--commit C] [--extend OLD.h5]
+  python3 qss_lifetime_gpu.py --raw DIR --h5 F.h5 [--commit C] [--extend OLD.h5 [--replace]]
                                                                  # device output -> HDF5
   python3 qss_lifetime_gpu.py --data DIR --out FIGDIR            # HDF5 -> figure and table
 With --extend, the sizes of OLD.h5 are kept where the new run went no further; a size in both
@@ -19,7 +19,9 @@ keeps the longer run, after its records over the common stretch are checked equa
 bit in the float32 the file stores)
 (the same seeds and the fixed-order sums of complete_graph_ensembles.cu give the same bits on
 every card and cluster size: a run that differs is not the same experiment and is refused).
-Each size's group names the device, commit and wall time of the run it comes from.
+With --replace, a size the new run holds replaces the stored one without that check (a run
+with another --lives: its records lie on another grid). Each size's group names the device,
+commit and wall time of the run it comes from.
 The second form reads DIR/qss_lifetime_gpu.h5 (and DIR/qss_lifetime.h5, the CPU's N = 200 ..
 1600, when present) and prints the table the report cites.
 """
@@ -53,8 +55,8 @@ def m_eq(U):
     return brentq(phi, 1e-9, 1.0 - 1e-12, xtol=1e-15)
 
 
-RUN_KEYS = ("device", "budget_s", "wall_s")
-SHARED_KEYS = ("h", "U", "K", "replicas", "lives", "seeds")
+RUN_KEYS = ("device", "budget_s", "wall_s", "lives")  # per size's group: its run's
+SHARED_KEYS = ("h", "U", "K", "replicas", "seeds")
 
 
 def read_raw(raw, commit):
@@ -97,12 +99,12 @@ def read_h5(path):
     return top, sizes
 
 
-def merge(old, new):
+def merge(old, new, replace=False):
     """The sizes of both; a size in both keeps the run with more steps, once the records the two
-    share are equal bit for bit."""
+    share are equal bit for bit (replace: the new run's, unchecked)."""
     merged = dict(old)
     for n, run in new.items():
-        if n in old:
+        if n in old and not replace:
             a, b = old[n][1], run[1]
             m = min(a.shape[1], b.shape[1])
             if old[n][0]["record_every"] != run[0]["record_every"] or \
@@ -115,14 +117,14 @@ def merge(old, new):
     return merged
 
 
-def convert(raw, out, commit, extend=None):
+def convert(raw, out, commit, extend=None, replace=False):
     meta, sizes = read_raw(raw, commit)
     if extend:
         top, old = read_h5(extend)
         for key in SHARED_KEYS:
             if top[key] != meta[key]:
                 raise SystemExit(f"{extend} has {key} = {top[key]}, {raw} {meta[key]}: not merged")
-        sizes = merge(old, sizes)
+        sizes = merge(old, sizes, replace)
     tmp = tempfile.NamedTemporaryFile(dir=os.path.dirname(os.path.abspath(out)), suffix=".h5",
                                       delete=False).name
     try:
@@ -376,13 +378,17 @@ def main():
     p.add_argument("--h5")
     p.add_argument("--commit", default="unknown")
     p.add_argument("--extend", help="an earlier HDF5 whose sizes the new run extends")
+    p.add_argument("--replace", action="store_true",
+                   help="with --extend: the new run's sizes replace the stored ones unchecked")
     p.add_argument("--data")
     p.add_argument("--out")
     args = p.parse_args()
     if args.raw:
         if not args.h5:
             p.error("--raw needs --h5")
-        convert(args.raw, args.h5, args.commit, args.extend)
+        if args.replace and not args.extend:
+            p.error("--replace needs --extend")
+        convert(args.raw, args.h5, args.commit, args.extend, args.replace)
         return
     if not (args.data and args.out):
         p.error("give --raw DIR --h5 F, or --data DIR --out FIGDIR")

@@ -55,12 +55,23 @@ bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
 }
 
+// System `s` of `e` holds the state and records of `want`, bit for bit.
+void check_same_run(const cuda::CompleteGraphEnsembles& e, std::size_t s, const Run& want) {
+  std::vector<double> theta, p;
+  e.get_state(s, theta, p);
+  CHECK(same_bits(theta, want.theta));
+  CHECK(same_bits(p, want.p));
+  CHECK(same_bits(e.records(s).R_mean, want.records.R_mean));
+  CHECK(same_bits(e.records(s).energy, want.records.energy));
+}
+
 }  // namespace
 
 TEST_CASE("the complete graph on the device follows the CPU's step to 1e-12 over 100 steps",
           "[gpu][complete]") {
-  // N = 5000: three of the CPU's 2048-row blocks, tiles of 3 rotors on the device.
-  const std::int64_t n = 5000;
+  // N = 9000: five of the CPU's 2048-row blocks; on the device tiles of 4 and 5 rotors, so that
+  // complete_graph_ensembles.cu's batches of 4 loads and the rotors after them both run.
+  const std::int64_t n = 9000;
   const Run d = device_run(n, 512, 100, 10);
   std::vector<double> theta, p;
   gpu_test::waterbag(n, k_replicas, k_sigma0, 21, theta, p);
@@ -135,11 +146,39 @@ TEST_CASE("systems side by side in one launch, in chunks, equal each run alone",
   e.advance(leap_frog_coefficients(), k_h, {100, 50});
   e.advance(leap_frog_coefficients(), k_h, {100, 0});
   e.advance(leap_frog_coefficients(), k_h, {100, 150});
-  std::vector<double> theta, p;
-  e.get_state(1, theta, p);
-  CHECK(same_bits(theta, alone.theta));
-  CHECK(same_bits(p, alone.p));
-  CHECK(same_bits(e.records(1).R_mean, alone.records.R_mean));
+  check_same_run(e, 1, alone);
   CHECK(e.steps_done(0) == 300);
   CHECK(e.records(0).written == 42);
+}
+
+TEST_CASE("a run stopped at a record's end and resumed in new ensembles equals it uninterrupted",
+          "[gpu][complete]") {
+  const Run alone = device_run(3000, 512, 200, 20);
+  std::vector<double> theta, p;
+  gpu_test::waterbag(3000, k_replicas, k_sigma0, 21, theta, p);
+  cuda::CompleteGraphRecords saved;
+  {
+    cuda::CompleteGraphEnsembles first({{3000, k_replicas, 1.0, 20, 10}});
+    first.set_state(0, theta, p);
+    first.advance(leap_frog_coefficients(), k_h, {120});
+    first.get_state(0, theta, p);
+    saved = first.records(0);
+    CHECK(saved.written == 6);
+  }
+  // Beside another system, on another launch shape: the bits depend on neither.
+  cuda::CompleteGraphEnsembles second(
+      {{700, k_replicas, 1.0, 7, 10}, {3000, k_replicas, 1.0, 20, 10}}, 128);
+  std::vector<double> t1, p1;
+  gpu_test::waterbag(700, k_replicas, k_sigma0, 5, t1, p1);
+  second.set_state(0, t1, p1);
+  // Steps of both first: the resumed system's own open interval (13 of 20 steps) is dropped.
+  second.set_state(1, theta, p);
+  second.advance(leap_frog_coefficients(), k_h, {33, 13});
+  second.resume(1, 120, theta, p, saved);
+  CHECK(second.steps_done(1) == 120);
+  second.advance(leap_frog_coefficients(), k_h, {0, 80});
+  check_same_run(second, 1, alone);
+  CHECK(second.records(1).written == 10);
+  CHECK_THROWS_AS(second.resume(1, 130, theta, p, saved), cuda::DeviceError);
+  CHECK_THROWS_AS(second.resume(1, 120, theta, p, cuda::CompleteGraphRecords{}), cuda::DeviceError);
 }

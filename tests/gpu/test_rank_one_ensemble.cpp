@@ -4,6 +4,7 @@
 // per replica; each step's order sums
 // and a record's five sums bit for bit across chunks; the same bits for 64, 256 and 1024
 // threads per block and run to run.
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
@@ -20,7 +21,8 @@ using hmfnet::gpu_test::HostEnsemble;
 
 namespace {
 
-// N = 5000: three of the 2048-row blocks Z is summed by.
+// N = 5000: three of the 2048-row blocks Z is summed by, the last ending in a part tile (904 =
+// 7 x 128 + 8 rows of rank_one_ensemble.cu's tiles).
 constexpr std::int64_t k_n = 5000;
 constexpr int k_replicas = 3;
 
@@ -29,8 +31,10 @@ struct Run {
   cuda::EnsembleSums sums;
 };
 
-const std::vector<double>& couplings() {
-  static const std::vector<double> K = {1.0, 2.5, 6.0};
+// 1, 2.5, 6 repeated over the replicas.
+std::vector<double> couplings(int replicas) {
+  std::vector<double> K(static_cast<std::size_t>(replicas));
+  for (std::size_t b = 0; b < K.size(); ++b) K[b] = std::array<double, 3>{1.0, 2.5, 6.0}[b % 3];
   return K;
 }
 
@@ -46,11 +50,12 @@ std::vector<double> weights(bool disordered) {
 
 // `steps` steps of `c` in the given chunks (the order sums of every step), on the device.
 Run device_run(bool self_loops, int threads, const SplittingCoefficients& c, double h,
-               const std::vector<std::int64_t>& chunks, bool disordered = false) {
+               const std::vector<std::int64_t>& chunks, bool disordered = false,
+               int replicas = k_replicas) {
   std::vector<double> theta, p;
-  gpu_test::waterbag(k_n, k_replicas, 0.6, 21, theta, p);
-  cuda::RankOneEnsemble e(weights(disordered), self_loops, k_replicas, threads);
-  e.set_coupling(couplings());
+  gpu_test::waterbag(k_n, replicas, 0.6, 21, theta, p);
+  cuda::RankOneEnsemble e(weights(disordered), self_loops, replicas, threads);
+  e.set_coupling(couplings(replicas));
   e.set_state(theta, p);
   Run r;
   for (const std::int64_t chunk : chunks) e.advance(c, h, chunk, &r.order);
@@ -60,11 +65,11 @@ Run device_run(bool self_loops, int threads, const SplittingCoefficients& c, dou
 }
 
 Run host_run(bool self_loops, const SplittingCoefficients& c, double h, std::int64_t steps,
-             bool disordered = false) {
+             bool disordered = false, int replicas = k_replicas) {
   std::vector<double> theta, p;
-  gpu_test::waterbag(k_n, k_replicas, 0.6, 21, theta, p);
-  auto host = HostEnsemble::rank_one(weights(disordered), k_replicas, self_loops);
-  host.K = couplings();
+  gpu_test::waterbag(k_n, replicas, 0.6, 21, theta, p);
+  auto host = HostEnsemble::rank_one(weights(disordered), replicas, self_loops);
+  host.K = couplings(replicas);
   host.set_state(theta, p);
   Run r;
   host.advance(c, h, steps, &r.order);
@@ -108,4 +113,12 @@ TEST_CASE("the rank-one device step: the same bits for 64, 256 and 1024 threads 
     INFO(threads << " threads per block");
     require_same(device_run(false, threads, yoshida4_coefficients(), 0.05, {50}), first);
   }
+}
+
+TEST_CASE("the rank-one device step: 19 replicas, Z's kernel in two groups of replicas",
+          "[gpu][rank_one]") {
+  // rank_one_ensemble.cu sums Z for up to 16 replicas per CUDA block: 19 makes a full group and
+  // a part one.
+  require_same(device_run(true, 256, leap_frog_coefficients(), 0.1, {7, 13}, true, 19),
+               host_run(true, leap_frog_coefficients(), 0.1, 20, true, 19));
 }

@@ -6,6 +6,7 @@
 // as h^2 (leap-frog) and h^4 (yoshida4); float32's energy error against float64's; memory refused
 // before anything is allocated.
 #include <algorithm>
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
@@ -27,6 +28,16 @@ constexpr std::size_t k_replicas = 3;
 
 const cuda::HostCsr& test_network() {
   static const cuda::HostCsr net = gpu_test::random_network(1500, 12.0, 5);
+  return net;
+}
+
+// The test network with weights A_nm in [0.5, 2] drawn from `seed` (symmetric pairs need not be:
+// the force reads rows).
+cuda::HostCsr weighted_network(std::uint64_t seed) {
+  cuda::HostCsr net = test_network();
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> weight(0.5, 2.0);
+  for (std::size_t k = 0; k < net.columns.size(); ++k) net.weights.push_back(weight(rng));
   return net;
 }
 
@@ -117,12 +128,8 @@ TEST_CASE("float32 device steps are the CPU's float32 bits; yoshida4 and blanes_
 
 TEST_CASE("a weighted network's device steps are the CPU's bits, float64 and float32",
           "[gpu][sparse]") {
-  // A_nm in [0.5, 2] (symmetric pairs need not be: the force reads rows); float32 narrows the
-  // weights as network_force.cpp does.
-  cuda::HostCsr net = test_network();
-  std::mt19937_64 rng(13);
-  std::uniform_real_distribution<double> weight(0.5, 2.0);
-  for (std::size_t k = 0; k < net.columns.size(); ++k) net.weights.push_back(weight(rng));
+  // float32 narrows the weights as network_force.cpp does.
+  const cuda::HostCsr net = weighted_network(13);
   const Start s = start(net.rows);
   for (const bool float32 : {false, true}) {
     cuda::SparseEnsemble e(
@@ -268,4 +275,44 @@ TEST_CASE("the directed ER generator draws G(N, p): its entry count", "[gpu][spa
       cuda::SparseEnsemble::directed_er(100000, 50.0, 3, 1, cuda::DevicePrecision::float64);
   // Binomial(N^2, p): mean 5 10^6, sd ~2236; 6 sd.
   CHECK(std::abs(static_cast<double>(e.entries()) - 5e6) < 6.0 * 2236.0);
+}
+
+TEST_CASE("one or four threads a row: the CPU's bits, one replica and three, weighted or not",
+          "[gpu][sparse]") {
+  // The four threads sum the row's quarters as row_field's four partials and combine them in its
+  // order (sparse_ensemble.cu's force_kernel_split); rows of 0 to ~30 entries end in every tail.
+  const cuda::HostCsr weighted = weighted_network(29);
+  const std::array<const cuda::HostCsr*, 2> networks = {&test_network(), &weighted};
+  for (const cuda::HostCsr* net : networks) {
+    for (const int replicas : {1, 3}) {
+      for (const bool float32 : {false, true}) {
+        std::vector<double> theta0, p0;
+        gpu_test::waterbag(net->rows, replicas, 0.6, 17, theta0, p0);
+        HostEnsemble host(*net, replicas, float32);
+        host.set_state(theta0, p0);
+        std::vector<double> host_order;
+        host.advance(leap_frog_coefficients(), 0.05, 40, &host_order);
+        for (const int per_row : {1, 4}) {
+          INFO((net->weights.empty() ? "0/1" : "weighted")
+               << ", " << replicas << " replicas, " << (float32 ? "float32" : "float64") << ", "
+               << per_row << " threads a row");
+          cuda::SparseEnsemble e(
+              *net, replicas,
+              float32 ? cuda::DevicePrecision::float32 : cuda::DevicePrecision::float64, 128);
+          CHECK(e.threads_per_row() == (replicas == 1 ? 4 : 1));
+          e.set_threads_per_row(per_row);
+          e.set_state(theta0, p0);
+          std::vector<double> order, theta, p;
+          e.advance(leap_frog_coefficients(), 0.05, 40, &order);
+          e.get_state(theta, p);
+          CHECK(differing(theta, host.theta) == 0);
+          CHECK(differing(p, host.p) == 0);
+          CHECK(differing(order, host_order) == 0);
+          CHECK(differing(e.sums().coupling, host.sums().coupling) == 0);
+        }
+      }
+    }
+  }
+  cuda::SparseEnsemble e(test_network(), 1, cuda::DevicePrecision::float64);
+  CHECK_THROWS_AS(e.set_threads_per_row(2), cuda::DeviceError);
 }

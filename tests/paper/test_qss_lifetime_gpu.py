@@ -132,6 +132,11 @@ def main():
         else:
             raise AssertionError("a run whose shared records differ was merged")
         assert not os.path.exists(os.path.join(tmp, "mixed.h5"))
+        # --replace: the same size on another record grid (another --lives) replaces it.
+        q.convert(other, os.path.join(tmp, "replaced.h5"), "jkl", extend=out, replace=True)
+        with h5py.File(os.path.join(tmp, "replaced.h5"), "r") as f:
+            assert f["N2000"].attrs["device"] == "card C" and f["N1000"].attrs["device"] == "card A"
+            assert abs(f["N2000/R_mean"][0, 0] - (2000 + 1e-3)) < 1e-3
     print("qss_lifetime_gpu.py: m_eq, half_way, power_law, convert and --extend as ported")
 
 

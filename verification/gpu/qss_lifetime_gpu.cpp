@@ -5,15 +5,19 @@
 // every record interval and its energy at the interval's end, 4000 records over T(N).
 //   T(N) = lives x 26313 (N / 1600)^1.39: `lives` times the life the CPU's full scale measured
 //   at N = 1600, carried with its fitted exponent (paper/full/beyond/: 1.39 +- 0.11).
-// The run advances all sizes in launches of `chunk` steps until each reaches T(N) or the wall
-// budget is spent; a size that stops early is marked (its series ends there: the analysis
-// treats a life not seen as censored, never as measured).
+// The run advances all sizes in launches of about `chunk` steps (whole record intervals) until
+// each reaches T(N) or the wall budget is spent; a size that stops early is marked (its series
+// ends there: the analysis treats a life not seen as censored, never as measured) and saved to
+// DIR/qss_gpu_resume.bin, from which `--resume` goes on with the bits of an uninterrupted run
+// (a size the file holds continues, the others start afresh).
 //
 //   hmfnet_gpu_qss_lifetime [--sizes 1000,2000,...] [--replicas 32] [--lives 3]
-//                           [--budget-s 200] [--out DIR]
-// Writes DIR/qss_gpu.json (parameters, per size the steps done and the records written, the
-// device, the wall time) and DIR/qss_gpu.f64 (per size in order: R_mean then energy, each
-// replicas x records, little-endian doubles). paper/scripts/qss_lifetime_gpu.py turns them into
+//                           [--budget-s 200] [--out DIR] [--resume FILE] [--chunks K]
+// (--chunks: stop after K launches, budget or not; for tests.) Writes DIR/qss_gpu.json
+// (parameters, per size the steps done and the records written, the device, the wall time),
+// DIR/qss_gpu.f64 (per size in order: R_mean then energy, each replicas x records, little-endian
+// doubles) and, where a size is unfinished, DIR/qss_gpu_resume.bin (qss_resume_file.hpp).
+// paper/scripts/qss_lifetime_gpu.py turns the first two into
 // paper/full/beyond/data/qss_lifetime_gpu.h5 and the figure. Exit 77 without a usable device.
 #include <algorithm>
 #include <chrono>
@@ -23,12 +27,15 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/random.hpp"
 #include "dynamics/cuda/complete_graph_ensembles.hpp"
 #include "dynamics/cuda/device.hpp"
+#include "qss_resume_file.hpp"
 
 using namespace hmfnet;
 
@@ -65,14 +72,71 @@ void start(std::int64_t n, int replicas, std::vector<double>& theta, std::vector
   }
 }
 
+// Sizes the resume file holds go on from it, after their parameters are checked against this
+// run's; the others start afresh. Throws std::runtime_error naming a size that differs.
+void resume_from(const std::string& path, const std::vector<cuda::CompleteGraphSystem>& systems,
+                 const std::vector<std::int64_t>& total, cuda::CompleteGraphEnsembles& e) {
+  for (verification::QssResumeSize& saved : verification::read_qss_resume(path)) {
+    for (std::size_t s = 0; s < systems.size(); ++s) {
+      const cuda::CompleteGraphSystem& sys = systems[s];
+      if (sys.n != saved.n) continue;
+      if (saved.replicas != sys.replicas || saved.record_every != sys.record_every ||
+          saved.records != sys.records || saved.steps_planned != total[s]) {
+        throw std::runtime_error(
+            path + ": N = " + std::to_string(sys.n) + " was run with " +
+            std::to_string(saved.replicas) + " replicas, a record every " +
+            std::to_string(saved.record_every) + " steps, " + std::to_string(saved.steps_planned) +
+            " steps planned; this run has " + std::to_string(sys.replicas) + ", " +
+            std::to_string(sys.record_every) + ", " + std::to_string(total[s]) +
+            " (--replicas and --lives must be the first run's)");
+      }
+      cuda::CompleteGraphRecords records;
+      records.R_mean = std::move(saved.R_mean);
+      records.energy = std::move(saved.energy);
+      e.resume(s, saved.steps_done, saved.theta, saved.p, records);
+      std::printf("N = %6lld: resumed at step %lld from %s\n", static_cast<long long>(sys.n),
+                  static_cast<long long>(saved.steps_done), path.c_str());
+    }
+  }
+}
+
+// The unfinished sizes to DIR/qss_gpu_resume.bin; none: no file (an older one is removed, so
+// that the folder never offers a resume its data do not continue).
+void save_unfinished(const std::string& out, const std::vector<cuda::CompleteGraphSystem>& systems,
+                     const std::vector<std::int64_t>& total,
+                     const cuda::CompleteGraphEnsembles& e) {
+  std::vector<verification::QssResumeSize> unfinished;
+  for (std::size_t s = 0; s < systems.size(); ++s) {
+    if (e.steps_done(s) >= total[s]) continue;
+    verification::QssResumeSize r;
+    r.n = systems[s].n;
+    r.replicas = systems[s].replicas;
+    r.record_every = systems[s].record_every;
+    r.records = systems[s].records;
+    r.steps_planned = total[s];
+    r.steps_done = e.steps_done(s);
+    cuda::CompleteGraphRecords records = e.records(s);
+    r.R_mean = std::move(records.R_mean);
+    r.energy = std::move(records.energy);
+    e.get_state(s, r.theta, r.p);
+    unfinished.push_back(std::move(r));
+  }
+  const std::string path = out + "/qss_gpu_resume.bin";
+  if (unfinished.empty()) {
+    std::remove(path.c_str());
+  } else {
+    verification::write_qss_resume(path, unfinished);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::vector<std::int64_t> sizes{20000, 10000, 5000, 2000, 1000};
   int replicas = 32;
   double lives = 3.0, budget = 200.0;
-  std::int64_t chunk = 100000;
-  std::string out = ".";
+  std::int64_t chunk = 100000, chunks = 0;
+  std::string out = ".", resume;
   if (argc % 2 == 0) {
     std::fprintf(stderr, "hmfnet_gpu_qss_lifetime: option %s has no value\n", argv[argc - 1]);
     return 2;
@@ -91,6 +155,10 @@ int main(int argc, char** argv) {
       chunk = std::stoll(value);
     } else if (key == "--out") {
       out = value;
+    } else if (key == "--resume") {
+      resume = value;
+    } else if (key == "--chunks") {
+      chunks = std::stoll(value);
     } else {
       std::fprintf(stderr, "hmfnet_gpu_qss_lifetime: unknown option %s\n", key.c_str());
       return 2;
@@ -118,16 +186,20 @@ int main(int argc, char** argv) {
       start(sizes[s], replicas, theta, p);
       e.set_state(s, theta, p);
     }
+    if (!resume.empty()) resume_from(resume, systems, total, e);
     const auto t0 = std::chrono::steady_clock::now();
     const auto elapsed = [&] {
       return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     };
     const auto lf = leap_frog_coefficients();
-    for (;;) {
+    for (std::int64_t launches = 0; chunks == 0 || launches < chunks; ++launches) {
       std::vector<std::int64_t> steps;
       bool any = false;
       for (std::size_t s = 0; s < sizes.size(); ++s) {
-        steps.push_back(std::min(chunk, total[s] - e.steps_done(s)));
+        // Whole record intervals, so that a run stopped between launches resumes exactly.
+        const std::int64_t every = systems[s].record_every;
+        steps.push_back(
+            std::min(std::max(every, chunk / every * every), total[s] - e.steps_done(s)));
         any = any || steps.back() > 0;
       }
       if (!any) break;
@@ -142,6 +214,7 @@ int main(int argc, char** argv) {
          << "  \"h\": " << k_h << ",\n  \"U\": " << k_U << ",\n  \"K\": 1,\n"
          << "  \"replicas\": " << replicas << ",\n  \"lives\": " << lives << ",\n"
          << "  \"budget_s\": " << budget << ",\n  \"wall_s\": " << wall << ",\n"
+         << "  \"resumed_from\": \"" << resume << "\",\n"
          << "  \"records\": " << k_records << ",\n"
          << "  \"seeds\": \"7000 + 100 N + replica (rotor_state.cpp draw)\",\n  \"sizes\": [\n";
     for (std::size_t s = 0; s < sizes.size(); ++s) {
@@ -160,8 +233,9 @@ int main(int argc, char** argv) {
                   static_cast<double>(total[s]) * k_h, static_cast<long long>(r.written));
     }
     meta << "  ]\n}\n";
+    save_unfinished(out, systems, total, e);
     std::printf("wall %.1f s\n", wall);
-  } catch (const cuda::DeviceError& err) {
+  } catch (const std::exception& err) {
     std::fprintf(stderr, "hmfnet_gpu_qss_lifetime: %s\n", err.what());
     return 1;
   }

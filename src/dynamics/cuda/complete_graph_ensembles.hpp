@@ -58,6 +58,12 @@ class CompleteGraphEnsembles {
   /// Advances each system by steps[s] steps (0 leaves it as it is), in one launch.
   void advance(const SplittingCoefficients& splitting, double h,
                const std::vector<std::int64_t>& steps);
+  /// Continues a system from a run stopped at a record's end: its state (as set_state), the
+  /// steps it had done (a multiple of record_every) and its records as records() gave them. The
+  /// run goes on with the bits it would have had uninterrupted: at a record's end the open
+  /// interval's sum of R is empty and Z, [cos, sin] are functions of the angles alone.
+  void resume(std::size_t system, std::int64_t steps_done, const std::vector<double>& theta,
+              const std::vector<double>& p, const CompleteGraphRecords& records);
   /// Steps done so far by a system.
   std::int64_t steps_done(std::size_t system) const;
   CompleteGraphRecords records(std::size_t system) const;

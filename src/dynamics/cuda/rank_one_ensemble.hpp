@@ -2,7 +2,8 @@
 // Replicas of the HMF with a rank-one coupling A = a a^T, with or without its diagonal
 // (rank_one_force.hpp; the complete graph K_N is a = 1), stepped on a CUDA device with the CPU's
 // bits: Z = sum_m a_m e^{i theta_m} of each replica summed as the CPU sums it (2048-row blocks,
-// each from 0 in row order, one thread per block and replica, then the blocks in order), then
+// each from 0 in row order, the terms staged in shared memory and added by one thread per block
+// and replica, then the blocks in order), then
 // each cell's y_n = a_n Z - [no diagonal] a_n^2 e^{i theta_n}, g and the observables' terms with
 // rank_one_force.cpp's functions (kernel_arithmetic.hpp). The stages, the closing kick and the
 // sums are every device ensemble's (device_ensemble.hpp), so `hmfnet simulate --device cuda` on K_N

@@ -50,6 +50,55 @@ __global__ void __launch_bounds__(1024) force_kernel(ForceArgs<T> a) {
   }
 }
 
+// The same g with k_row_threads threads a cell (adjacent lanes of one warp): thread j sums the
+// entries begin + j, begin + j + 4, ... of the row's whole groups of four (row_field's partial
+// j, in its order), thread 0 then the tail; the partials are combined as row_field combines
+// them, (s0 + s1) + (s2 + s3), by two shuffles: the same bits. Where a cell is a warp lane alone
+// (one replica), its row's column indices are read 16 bytes at a time per lane by 32 rows at
+// once; here 8 rows read theirs as 8 contiguous runs, and four times the threads gather.
+constexpr int k_row_threads = 4;
+
+template <typename T>
+__global__ void __launch_bounds__(1024) force_kernel_split(ForceArgs<T> a) {
+  const std::int64_t t = static_cast<std::int64_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  const std::int64_t k = t / k_row_threads;
+  const int j = static_cast<int>(t % k_row_threads);
+  const bool live = k < a.cells;
+  T c_part = T(0), s_part = T(0);
+  std::int64_t row = 0;
+  int lane = 0;
+  if (live) {
+    row = k / a.replicas;
+    lane = static_cast<int>(k % a.replicas);
+    const std::int64_t begin = a.offsets[row], end = a.offsets[row + 1];
+    const std::int64_t full = begin + (end - begin) / 4 * 4;
+    const auto add = [&](std::int64_t q) {
+      const T* r = a.table + 2 * static_cast<std::ptrdiff_t>(a.columns[q]) * a.replicas + 2 * lane;
+      const T w = a.weights != nullptr ? a.weights[q] : T(1);
+      c_part += w * r[0];
+      s_part += w * r[1];
+    };
+    for (std::int64_t q = begin + j; q < full; q += 4) add(q);
+    if (j == 0) {
+      for (std::int64_t q = full; q < end; ++q) add(q);
+    }
+  }
+  // Every lane of the warp takes part in the shuffles (blockDim is a multiple of 32).
+  constexpr unsigned all = 0xffffffffu;
+  const T c_pair = c_part + __shfl_down_sync(all, c_part, 1);  // lanes j = 0, 2: s0 + s1, s2 + s3
+  const T s_pair = s_part + __shfl_down_sync(all, s_part, 1);
+  const T c_sum = c_pair + __shfl_down_sync(all, c_pair, 2);
+  const T s_sum = s_pair + __shfl_down_sync(all, s_pair, 2);
+  if (!live || j != 0) return;
+  const LocalField y{static_cast<double>(c_sum), static_cast<double>(s_sum)};
+  const double c = a.cs[2 * k], s = a.cs[2 * k + 1];
+  a.g[k] = coupling_force(a.inverse_n, c, s, y);
+  if (a.terms != nullptr) {
+    a.terms[2 * k] = order_term(y);
+    a.terms[2 * k + 1] = coupling_term(c, s, y);
+  }
+}
+
 // The directed G(N, p) row by row: geometric gaps between successive columns, from a
 // SplitMix64 stream keyed by (seed, row). The same function counts (out == nullptr) and fills.
 __device__ std::uint64_t mix(std::uint64_t z) {
@@ -95,9 +144,12 @@ __global__ void er_fill_kernel(std::uint64_t seed, std::int64_t n, double log_q,
 
 struct SparseEnsemble::Impl : EnsembleCells {
   Impl(std::int64_t rows, int replicas, DevicePrecision p, int threads)
-      : EnsembleCells(rows, replicas, p == DevicePrecision::float32, threads), precision(p) {}
+      : EnsembleCells(rows, replicas, p == DevicePrecision::float32, threads),
+        precision(p),
+        threads_per_row(replicas == 1 ? k_row_threads : 1) {}
   std::int64_t entries = 0;
   DevicePrecision precision;
+  int threads_per_row;  // 1: force_kernel, k_row_threads: force_kernel_split
   DeviceBuffer<std::int64_t> offsets;
   DeviceBuffer<std::int32_t> columns;
   DeviceBuffer<double> weights64;  // float64 weighted networks
@@ -121,7 +173,12 @@ struct SparseEnsemble::Impl : EnsembleCells {
                          m_cs.data(),    m_replicas,
                          cells(),        1.0 / static_cast<double>(m_rows),
                          m_g.data(),     with_terms ? m_terms.data() : nullptr};
-    force_kernel<T><<<cell_blocks(), tpb()>>>(a);
+    if (threads_per_row == 1) {
+      force_kernel<T><<<cell_blocks(), tpb()>>>(a);
+    } else {
+      const auto threads = static_cast<std::size_t>(cells()) * k_row_threads;
+      force_kernel_split<T><<<blocks_for(threads, static_cast<int>(tpb())), tpb()>>>(a);
+    }
     check_launch("force kernel");
   }
 };
@@ -239,5 +296,15 @@ SparseEnsemble SparseEnsemble::directed_er(std::int64_t rows, double degree, std
 }
 
 std::int64_t SparseEnsemble::entries() const { return static_cast<Impl&>(cells()).entries; }
+
+void SparseEnsemble::set_threads_per_row(int threads) {
+  if (threads != 1 && threads != k_row_threads) {
+    throw DeviceError("sparse ensemble: threads per cell " + std::to_string(threads) +
+                      " is neither 1 nor " + std::to_string(k_row_threads));
+  }
+  static_cast<Impl&>(cells()).threads_per_row = threads;
+}
+
+int SparseEnsemble::threads_per_row() const { return static_cast<Impl&>(cells()).threads_per_row; }
 
 }  // namespace hmfnet::cuda

@@ -34,6 +34,11 @@ class SparseEnsemble : public DeviceEnsemble {
                              DevicePrecision precision, bool weighted = false);
 
   std::int64_t entries() const;
+  /// Threads summing one cell's row: 1, or 4 (each a quarter of the row's entries, combined in
+  /// the CPU's order). The results do not depend on it; 4 by default for one replica, where a
+  /// warp's lanes are otherwise 32 rows reading their column indices apart.
+  void set_threads_per_row(int threads);
+  int threads_per_row() const;
 
   struct Impl;  ///< the device side (sparse_ensemble.cu)
 
