@@ -96,13 +96,13 @@ TEST_CASE("the complete graph on the device follows the CPU's step to 1e-12 over
   INFO("largest relative gap of theta and p: " << gap);
   CHECK(gap < 1e-12);
   REQUIRE(d.records.written == 10);
-  for (int b = 0; b < k_replicas; ++b) {
-    for (int i = 0; i < 10; ++i) {
-      const double R = d.records.R_mean[static_cast<std::size_t>(b * 10 + i)];
-      const double H = d.records.energy[static_cast<std::size_t>(b * 10 + i)];
-      CHECK(std::abs(R - R_host[static_cast<std::size_t>(i * k_replicas + b)]) < 1e-12);
-      CHECK(std::abs(H - H_host[static_cast<std::size_t>(i * k_replicas + b)]) <
-            1e-12 * static_cast<double>(n));
+  constexpr auto replicas = static_cast<std::size_t>(k_replicas);
+  for (std::size_t b = 0; b < replicas; ++b) {
+    for (std::size_t i = 0; i < 10; ++i) {
+      const double R = d.records.R_mean[b * 10 + i];
+      const double H = d.records.energy[b * 10 + i];
+      CHECK(std::abs(R - R_host[i * replicas + b]) < 1e-12);
+      CHECK(std::abs(H - H_host[i * replicas + b]) < 1e-12 * static_cast<double>(n));
     }
   }
 }
