@@ -126,8 +126,9 @@ Row sparse_row(const Ceilings& c, std::int64_t n, int replicas, cuda::DevicePrec
 // threads: per block; with few replicas, 256 lets a replica's 2048 tiles spread over a cluster of
 // 8 blocks (one tile a thread), 512 over 4 (complete_graph_ensembles.cu: automatic_cluster).
 Row complete_row(const Ceilings& c, std::int64_t n, int replicas, std::int64_t steps,
-                 int threads = 512) {
+                 int threads = 512, int batch = 0) {
   cuda::CompleteGraphEnsembles e({{n, replicas, 1.0, steps * 10, 0}}, threads);
+  if (batch > 0) e.set_batch(batch);
   const auto cells = static_cast<std::size_t>(n) * static_cast<std::size_t>(replicas);
   std::vector<double> theta, p;
   random_state(cells, theta, p);
@@ -138,7 +139,7 @@ Row complete_row(const Ceilings& c, std::int64_t n, int replicas, std::int64_t s
     e.synchronize();
   });
   Row r;
-  r.kind = "complete graph t" + std::to_string(threads);
+  r.kind = "complete graph t" + std::to_string(threads) + " b" + std::to_string(e.batch());
   r.precision = "float64";
   r.n = n;
   r.replicas = replicas;
@@ -240,12 +241,15 @@ int main(int argc, char** argv) {
     rows.push_back(sparse_row(c, 1000000, 8, P::float64, 100 / scale, 4));
     rows.push_back(complete_row(c, 100000, 16, 2000 / scale));
     rows.push_back(complete_row(c, 100000, 16, 2000 / scale, 256));
+    // The other batches of rotors loaded together (complete_graph_ensembles.hpp), same run.
+    rows.push_back(complete_row(c, 100000, 16, 2000 / scale, 512, 1));
+    rows.push_back(complete_row(c, 100000, 16, 2000 / scale, 512, 8));
     rows.push_back(complete_row(c, 20000, 64, 10000 / scale));
     rows.push_back(complete_row(c, 64, 64, 20000 / scale));
     rows.push_back(rank_one_row(c, 100000, 16, 2000 / scale));
     rows.push_back(rank_one_row(c, 20000, 64, 2000 / scale));
     rows.push_back(rank_one_row(c, 1000, 32, 2000 / scale));
-    std::printf("\n%-20s %-8s %9s %3s %12s %12s %6s %10s %9s  %s\n", "kind", "prec", "N", "B",
+    std::printf("\n%-22s %-8s %9s %3s %12s %12s %6s %10s %9s  %s\n", "kind", "prec", "N", "B",
                 "rate (G/s)", "bound (G/s)", "frac", "step (us)", "mem (MB)", "limit");
     std::ofstream csv;
     if (!out.empty()) {
@@ -253,7 +257,7 @@ int main(int argc, char** argv) {
       csv << "kind,precision,N,replicas,rate,bound,fraction,step_us,memory_mb,limit\n";
     }
     for (const Row& r : rows) {
-      std::printf("%-20s %-8s %9lld %3d %12.3f %12.3f %5.0f%% %10.2f %9.1f  %s\n", r.kind.c_str(),
+      std::printf("%-22s %-8s %9lld %3d %12.3f %12.3f %5.0f%% %10.2f %9.1f  %s\n", r.kind.c_str(),
                   r.precision.c_str(), static_cast<long long>(r.n), r.replicas, r.rate / 1e9,
                   r.bound / 1e9, 100.0 * r.rate / r.bound, r.step_us, r.memory_mb, r.limit.c_str());
       if (csv) {

@@ -27,14 +27,15 @@ struct Run {
   cuda::CompleteGraphRecords records;
 };
 
-// cluster: blocks per replica (0: the automatic choice).
+// cluster: blocks per replica (0: the automatic choice); batch: rotors loaded together.
 Run device_run(std::int64_t n, int threads, std::int64_t steps, std::int64_t record_every,
-               int cluster = 0) {
+               int cluster = 0, int batch = 4) {
   std::vector<double> theta, p;
   gpu_test::waterbag(n, k_replicas, k_sigma0, 21, theta, p);
   cuda::CompleteGraphEnsembles e({{n, k_replicas, 1.0, record_every, steps / record_every}},
                                  threads, cluster);
   if (cluster > 0) REQUIRE(e.cluster_blocks() == cluster);
+  e.set_batch(batch);
   e.set_state(0, theta, p);
   e.advance(leap_frog_coefficients(), k_h, {steps});
   Run r;
@@ -181,4 +182,20 @@ TEST_CASE("a run stopped at a record's end and resumed in new ensembles equals i
   CHECK(second.records(1).written == 10);
   CHECK_THROWS_AS(second.resume(1, 130, theta, p, saved), cuda::DeviceError);
   CHECK_THROWS_AS(second.resume(1, 120, theta, p, cuda::CompleteGraphRecords{}), cuda::DeviceError);
+}
+
+TEST_CASE("the complete graph's bits are the same for batches of 1, 4 and 8 rotors",
+          "[gpu][complete]") {
+  // N = 20000: tiles of 9 and 10 rotors, so a batch of 8 runs once and leaves a tail, 4 twice.
+  const Run one = device_run(20000, 512, 60, 20, 0, 1);
+  for (const int batch : {4, 8}) {
+    INFO("batch " << batch);
+    const Run b = device_run(20000, 512, 60, 20, 0, batch);
+    CHECK(same_bits(one.theta, b.theta));
+    CHECK(same_bits(one.p, b.p));
+    CHECK(same_bits(one.records.R_mean, b.records.R_mean));
+    CHECK(same_bits(one.records.energy, b.records.energy));
+  }
+  cuda::CompleteGraphEnsembles e({{100, 1, 1.0, 1, 0}});
+  CHECK_THROWS_AS(e.set_batch(3), cuda::DeviceError);
 }

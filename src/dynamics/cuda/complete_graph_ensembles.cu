@@ -113,23 +113,25 @@ __device__ __forceinline__ void stage_rotor(const RotorStage& st, double c, doub
   store_phase(moved, m, cs, zc, zs);
 }
 
-// Rotors a thread loads before it updates any of them (stage_tile).
-constexpr int k_batch = 4;
+// Rotors a thread loads before it updates any of them (stage_tile): 4 measured (1.15x one on an
+// H200); 1 and 8 kept for the benchmark (set_batch).
+constexpr int k_default_batch = 4;
 
 // A stage of tile t's rotors m = t, t + tiles, ..., their new phases summed in m's order. One
 // tile a thread caps a replica at 2048 threads, and one rotor at a time made each thread wait on
 // memory once per rotor (the step ran at a third of its sincos bound, as fast on 128
-// multiprocessors as on 64: measured on an H200). So the loads of k_batch rotors go out
+// multiprocessors as on 64: measured on an H200). So the loads of Batch rotors go out
 // together before any of them is updated; each rotor's arithmetic and the sums' order are
 // unchanged: the same bits.
+template <int Batch>
 __device__ __forceinline__ void stage_tile(const RotorStage& st, int t, int tiles, std::int64_t n,
                                            double* __restrict__ theta, double* __restrict__ p,
                                            double* __restrict__ cs, double& zc, double& zs) {
   std::int64_t m = t;
-  for (; m + (k_batch - 1) * static_cast<std::int64_t>(tiles) < n; m += k_batch * tiles) {
-    double c[k_batch], s[k_batch], pm[k_batch], th[k_batch];
+  for (; m + (Batch - 1) * static_cast<std::int64_t>(tiles) < n; m += Batch * tiles) {
+    double c[Batch], s[Batch], pm[Batch], th[Batch];
 #pragma unroll
-    for (int u = 0; u < k_batch; ++u) {
+    for (int u = 0; u < Batch; ++u) {
       const std::int64_t q = m + static_cast<std::int64_t>(u) * tiles;
       c[u] = cs[2 * q];
       s[u] = cs[2 * q + 1];
@@ -137,7 +139,7 @@ __device__ __forceinline__ void stage_tile(const RotorStage& st, int t, int tile
       th[u] = theta[q];
     }
 #pragma unroll
-    for (int u = 0; u < k_batch; ++u) {
+    for (int u = 0; u < Batch; ++u) {
       stage_rotor(st, c[u], s[u], pm[u], th[u], m + static_cast<std::int64_t>(u) * tiles, theta, p,
                   cs, zc, zs);
     }
@@ -175,6 +177,7 @@ __device__ void gather_tiles(cg::cluster_group& cluster, const Cluster& me, doub
   cluster.sync();
 }
 
+template <int Batch>
 __global__ void __launch_bounds__(1024)
     complete_graph_kernel(Arrays a, Table table, bool evaluate_only) {
   extern __shared__ double shared[];
@@ -221,7 +224,7 @@ __global__ void __launch_bounds__(1024)
                           table.drift[i]};
       for (int t = me.first_tile(); t < tiles; t += me.tile_stride()) {
         double zc = 0.0, zs = 0.0;
-        stage_tile(st, t, tiles, n, theta, p, cs, zc, zs);
+        stage_tile<Batch>(st, t, tiles, n, theta, p, cs, zc, zs);
         sums_c[t] = zc;
         sums_s[t] = zs;
       }
@@ -286,6 +289,7 @@ struct CompleteGraphEnsembles::Impl {
   int threads = 512;
   int blocks = 0;   // replicas over all systems: one cluster each
   int cluster = 1;  // blocks per cluster
+  int batch = k_default_batch;
   DeviceBuffer<SystemInfo> d_info;
   DeviceBuffer<int> block_system, block_replica;
   DeviceBuffer<double> theta, p, cs, z, r_sum, R_mean, energy;
@@ -309,7 +313,10 @@ struct CompleteGraphEnsembles::Impl {
     attribute.val.clusterDim.z = 1;
     config.attrs = &attribute;
     config.numAttrs = 1;
-    check(cudaLaunchKernelEx(&config, complete_graph_kernel, arrays(), table, evaluate_only),
+    const auto kernel = batch == 1   ? complete_graph_kernel<1>
+                        : batch == 8 ? complete_graph_kernel<8>
+                                     : complete_graph_kernel<k_default_batch>;
+    check(cudaLaunchKernelEx(&config, kernel, arrays(), table, evaluate_only),
           "complete graph kernel");
   }
 };
@@ -541,5 +548,15 @@ void CompleteGraphEnsembles::synchronize() const {
 }
 
 int CompleteGraphEnsembles::cluster_blocks() const { return m_impl->cluster; }
+
+void CompleteGraphEnsembles::set_batch(int rotors) {
+  if (rotors != 1 && rotors != k_default_batch && rotors != 8) {
+    throw DeviceError("complete graph ensembles: a batch of " + std::to_string(rotors) +
+                      " rotors is not 1, 4 or 8");
+  }
+  m_impl->batch = rotors;
+}
+
+int CompleteGraphEnsembles::batch() const { return m_impl->batch; }
 
 }  // namespace hmfnet::cuda

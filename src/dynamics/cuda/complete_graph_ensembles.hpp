@@ -72,6 +72,10 @@ class CompleteGraphEnsembles {
   void synchronize() const;
   /// The blocks per replica chosen.
   int cluster_blocks() const;
+  /// Rotors a thread loads together before updating them: 1, 4 (the default) or 8. The results
+  /// do not depend on it; the benchmark measures each.
+  void set_batch(int rotors);
+  int batch() const;
 
  private:
   struct Impl;
