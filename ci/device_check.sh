@@ -203,15 +203,14 @@ check_qss() {
 # The campaign's resume (qss_resume_file.hpp): N = 1000 stopped after 3 launches and resumed
 # from its qss_gpu_resume.bin must write the records of the same run uninterrupted, bit for bit.
 check_qss_resume() {
-  local log="$OUT/runs.log" rc=0 t0=$EPOCHREALTIME dir="$build/qss-resume" limit
+  local log="$OUT/runs.log" rc=0 t0=$EPOCHREALTIME dir="$build/qss-resume"
   local run=("$bin_dir/hmfnet_gpu_qss_lifetime" --sizes 1000 --replicas 8 --lives 0.3 --chunk 2000)
-  limit=$(limit_for 60)
   rm -rf "$dir" && mkdir -p "$dir/whole" "$dir/first" "$dir/rest"
   echo "== QSS resume: N = 1000, 8 replicas, stopped after 3 launches, resumed" >>"$log"
-  bounded "$limit" "$log" "${run[@]}" --out "$dir/whole" || rc=$?
-  [ "$rc" -ne 0 ] || bounded "$limit" "$log" "${run[@]}" --chunks 3 --out "$dir/first" || rc=$?
-  [ "$rc" -ne 0 ] || bounded "$limit" "$log" "${run[@]}" --resume "$dir/first/qss_gpu_resume.bin" \
-    --out "$dir/rest" || rc=$?
+  bounded "$(limit_for 30)" "$log" "${run[@]}" --out "$dir/whole" || rc=$?
+  [ "$rc" -ne 0 ] || bounded "$(limit_for 30)" "$log" "${run[@]}" --chunks 3 --out "$dir/first" || rc=$?
+  [ "$rc" -ne 0 ] || bounded "$(limit_for 30)" "$log" "${run[@]}" \
+    --resume "$dir/first/qss_gpu_resume.bin" --out "$dir/rest" || rc=$?
   if [ "$rc" -eq 77 ]; then
     record "QSS resume" skip "$(elapsed_since "$t0")" "no device"
   elif [ "$rc" -ne 0 ]; then

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <random>
 #include <string>
@@ -87,6 +88,12 @@ TEST_CASE("the QSS resume file keeps every value's bits", "[qss_resume_file]") {
   }
   write_qss_resume(path, {});
   CHECK(read_qss_resume(path).empty());
+  // Arrays that contradict their header: refused, the old file whole, no temporary left.
+  QssResumeSize bad = filled(20, 2, 4, 5);
+  bad.theta.pop_back();
+  CHECK_THROWS_WITH(write_qss_resume(path, {bad}), Catch::Contains("arrays of the wrong length"));
+  CHECK(read_qss_resume(path).empty());
+  CHECK(std::distance(fs::directory_iterator(f.dir), fs::directory_iterator()) == 1);
 }
 
 TEST_CASE("a damaged QSS resume file is refused naming the file and the fault",

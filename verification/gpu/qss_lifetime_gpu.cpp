@@ -9,14 +9,15 @@
 // each reaches T(N) or the wall budget is spent; a size that stops early is marked (its series
 // ends there: the analysis treats a life not seen as censored, never as measured) and saved to
 // DIR/qss_gpu_resume.bin, from which `--resume` goes on with the bits of an uninterrupted run
-// (a size the file holds continues, the others start afresh).
+// (a size the file holds continues, a finished one stays finished, the others start afresh;
+// the file's sizes this run does not step are kept in the file it writes).
 //
 //   hmfnet_gpu_qss_lifetime [--sizes 1000,2000,...] [--replicas 32] [--lives 3]
 //                           [--budget-s 200] [--out DIR] [--resume FILE] [--chunks K]
 // (--chunks: stop after K launches, budget or not; for tests.) Writes DIR/qss_gpu.json
 // (parameters, per size the steps done and the records written, the device, the wall time),
 // DIR/qss_gpu.f64 (per size in order: R_mean then energy, each replicas x records, little-endian
-// doubles) and, where a size is unfinished, DIR/qss_gpu_resume.bin (qss_resume_file.hpp).
+// doubles) and, while a size is unfinished, DIR/qss_gpu_resume.bin (qss_resume_file.hpp).
 // paper/scripts/qss_lifetime_gpu.py turns the first two into
 // paper/full/beyond/data/qss_lifetime_gpu.h5 and the figure. Exit 77 without a usable device.
 #include <algorithm>
@@ -72,11 +73,16 @@ void start(std::int64_t n, int replicas, std::vector<double>& theta, std::vector
   }
 }
 
-// Sizes the resume file holds go on from it, after their parameters are checked against this
-// run's; the others start afresh. Throws std::runtime_error naming a size that differs.
-void resume_from(const std::string& path, const std::vector<cuda::CompleteGraphSystem>& systems,
-                 const std::vector<std::int64_t>& total, cuda::CompleteGraphEnsembles& e) {
+// Sizes the resume file holds go on from it (a finished one stays finished), after their
+// parameters are checked against this run's; the others start afresh. Returns the file's sizes
+// this run does not step, so that the file written at its end keeps them. Throws
+// std::runtime_error naming a size that differs.
+std::vector<verification::QssResumeSize> resume_from(
+    const std::string& path, const std::vector<cuda::CompleteGraphSystem>& systems,
+    const std::vector<std::int64_t>& total, cuda::CompleteGraphEnsembles& e) {
+  std::vector<verification::QssResumeSize> others;
   for (verification::QssResumeSize& saved : verification::read_qss_resume(path)) {
+    bool stepped = false;
     for (std::size_t s = 0; s < systems.size(); ++s) {
       const cuda::CompleteGraphSystem& sys = systems[s];
       if (sys.n != saved.n) continue;
@@ -94,20 +100,31 @@ void resume_from(const std::string& path, const std::vector<cuda::CompleteGraphS
       records.R_mean = std::move(saved.R_mean);
       records.energy = std::move(saved.energy);
       e.resume(s, saved.steps_done, saved.theta, saved.p, records);
+      stepped = true;
       std::printf("N = %6lld: resumed at step %lld from %s\n", static_cast<long long>(sys.n),
                   static_cast<long long>(saved.steps_done), path.c_str());
     }
+    if (!stepped) {
+      std::printf("N = %6lld: in %s, not in --sizes: kept as it is\n",
+                  static_cast<long long>(saved.n), path.c_str());
+      others.push_back(std::move(saved));
+    }
   }
+  return others;
 }
 
-// The unfinished sizes to DIR/qss_gpu_resume.bin; none: no file (an older one is removed, so
-// that the folder never offers a resume its data do not continue).
-void save_unfinished(const std::string& out, const std::vector<cuda::CompleteGraphSystem>& systems,
-                     const std::vector<std::int64_t>& total,
-                     const cuda::CompleteGraphEnsembles& e) {
-  std::vector<verification::QssResumeSize> unfinished;
+// Every size's state, steps and records (and the resume file's sizes this run did not step) to
+// DIR/qss_gpu_resume.bin while any is unfinished, so that --resume continues the whole campaign
+// and its records come out whole; all finished: no file (an older one is removed, so that the
+// folder never offers a resume its data do not continue).
+void save_state(const std::string& out, const std::vector<cuda::CompleteGraphSystem>& systems,
+                const std::vector<std::int64_t>& total, const cuda::CompleteGraphEnsembles& e,
+                std::vector<verification::QssResumeSize> others) {
+  bool unfinished = false;
+  for (const verification::QssResumeSize& o : others) unfinished |= o.steps_done < o.steps_planned;
+  std::vector<verification::QssResumeSize> saved;
   for (std::size_t s = 0; s < systems.size(); ++s) {
-    if (e.steps_done(s) >= total[s]) continue;
+    unfinished |= e.steps_done(s) < total[s];
     verification::QssResumeSize r;
     r.n = systems[s].n;
     r.replicas = systems[s].replicas;
@@ -119,14 +136,25 @@ void save_unfinished(const std::string& out, const std::vector<cuda::CompleteGra
     r.R_mean = std::move(records.R_mean);
     r.energy = std::move(records.energy);
     e.get_state(s, r.theta, r.p);
-    unfinished.push_back(std::move(r));
+    saved.push_back(std::move(r));
   }
+  for (verification::QssResumeSize& o : others) saved.push_back(std::move(o));
   const std::string path = out + "/qss_gpu_resume.bin";
-  if (unfinished.empty()) {
+  if (!unfinished) {
     std::remove(path.c_str());
   } else {
-    verification::write_qss_resume(path, unfinished);
+    verification::write_qss_resume(path, saved);
   }
+}
+
+// Quotes and backslashes escaped for a JSON string.
+std::string json_escaped(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out;
 }
 
 }  // namespace
@@ -164,6 +192,12 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  if (replicas < 1 || !(lives > 0.0) || chunk < 1 || chunks < 0 || sizes.empty()) {
+    std::fprintf(stderr,
+                 "hmfnet_gpu_qss_lifetime: --replicas and --chunk must be >= 1, --lives > 0, "
+                 "--chunks >= 0 and --sizes not empty\n");
+    return 2;
+  }
   std::string why;
   if (!cuda::device_usable(why)) {
     std::printf("hmfnet_gpu_qss_lifetime: skipped: %s\n", why.c_str());
@@ -186,7 +220,8 @@ int main(int argc, char** argv) {
       start(sizes[s], replicas, theta, p);
       e.set_state(s, theta, p);
     }
-    if (!resume.empty()) resume_from(resume, systems, total, e);
+    std::vector<verification::QssResumeSize> others;
+    if (!resume.empty()) others = resume_from(resume, systems, total, e);
     const auto t0 = std::chrono::steady_clock::now();
     const auto elapsed = [&] {
       return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -214,7 +249,7 @@ int main(int argc, char** argv) {
          << "  \"h\": " << k_h << ",\n  \"U\": " << k_U << ",\n  \"K\": 1,\n"
          << "  \"replicas\": " << replicas << ",\n  \"lives\": " << lives << ",\n"
          << "  \"budget_s\": " << budget << ",\n  \"wall_s\": " << wall << ",\n"
-         << "  \"resumed_from\": \"" << resume << "\",\n"
+         << "  \"resumed_from\": \"" << json_escaped(resume) << "\",\n"
          << "  \"records\": " << k_records << ",\n"
          << "  \"seeds\": \"7000 + 100 N + replica (rotor_state.cpp draw)\",\n  \"sizes\": [\n";
     for (std::size_t s = 0; s < sizes.size(); ++s) {
@@ -233,7 +268,7 @@ int main(int argc, char** argv) {
                   static_cast<double>(total[s]) * k_h, static_cast<long long>(r.written));
     }
     meta << "  ]\n}\n";
-    save_unfinished(out, systems, total, e);
+    save_state(out, systems, total, e, std::move(others));
     std::printf("wall %.1f s\n", wall);
   } catch (const std::exception& err) {
     std::fprintf(stderr, "hmfnet_gpu_qss_lifetime: %s\n", err.what());

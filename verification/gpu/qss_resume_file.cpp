@@ -65,35 +65,47 @@ void check_header(const QssResumeSize& s, const std::string& path) {
   }
 }
 
+// The file's bytes to `tmp` (errors name `path`, the file the caller asked for).
+void write_sizes(const std::string& tmp, const std::string& path,
+                 const std::vector<QssResumeSize>& sizes) {
+  std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+  if (!out) throw bad(path, "cannot be written");
+  out.write(k_magic.data(), k_magic.size());
+  put(out, static_cast<std::int64_t>(sizes.size()));
+  for (const QssResumeSize& s : sizes) {
+    const auto records = static_cast<std::size_t>(s.replicas * s.records);
+    const auto cells = static_cast<std::size_t>(s.n * s.replicas);
+    if (s.R_mean.size() != records || s.energy.size() != records || s.theta.size() != cells ||
+        s.p.size() != cells) {
+      throw bad(path, "size N = " + std::to_string(s.n) + ": arrays of the wrong length");
+    }
+    for (const std::int64_t v :
+         {s.n, s.replicas, s.record_every, s.records, s.steps_planned, s.steps_done}) {
+      put(out, v);
+    }
+    put(out, s.R_mean);
+    put(out, s.energy);
+    put(out, s.theta);
+    put(out, s.p);
+  }
+  out.flush();
+  if (!out) throw bad(path, "writing failed");
+}
+
 }  // namespace
 
 void write_qss_resume(const std::string& path, const std::vector<QssResumeSize>& sizes) {
   const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw bad(path, "cannot be written");
-    out.write(k_magic.data(), k_magic.size());
-    put(out, static_cast<std::int64_t>(sizes.size()));
-    for (const QssResumeSize& s : sizes) {
-      const auto records = static_cast<std::size_t>(s.replicas * s.records);
-      const auto cells = static_cast<std::size_t>(s.n * s.replicas);
-      if (s.R_mean.size() != records || s.energy.size() != records || s.theta.size() != cells ||
-          s.p.size() != cells) {
-        throw bad(path, "size N = " + std::to_string(s.n) + ": arrays of the wrong length");
-      }
-      for (const std::int64_t v :
-           {s.n, s.replicas, s.record_every, s.records, s.steps_planned, s.steps_done}) {
-        put(out, v);
-      }
-      put(out, s.R_mean);
-      put(out, s.energy);
-      put(out, s.theta);
-      put(out, s.p);
-    }
-    out.flush();
-    if (!out) throw bad(path, "writing failed");
+  try {
+    write_sizes(tmp, path, sizes);
+  } catch (...) {
+    std::remove(tmp.c_str());
+    throw;
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw bad(path, "cannot be renamed into place");
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw bad(path, "cannot be renamed into place");
+  }
 }
 
 std::vector<QssResumeSize> read_qss_resume(const std::string& path) {

@@ -1,7 +1,7 @@
 #pragma once
 // The QSS campaign's resume file (qss_lifetime_gpu.cpp): what a run stopped at its sizes'
 // record ends needs to go on with the bits it would have had uninterrupted
-// (CompleteGraphEnsembles::resume): per unfinished size its state, steps and records.
+// (CompleteGraphEnsembles::resume): per size its state, steps and records.
 //
 // Layout, little-endian: the 16 bytes "hmfnet-qss-res-1", the size count (int64), then per size
 // six int64 (N, replicas, record_every, records, steps_planned, steps_done) and four double

@@ -152,6 +152,12 @@ namespace {
 std::unique_ptr<RankOneEnsemble::Impl> rank_one_cells(const std::vector<double>& a, bool diagonal,
                                                       int replicas, int threads_per_block) {
   const auto rows = static_cast<std::int64_t>(a.size());
+  // z_blocks_kernel's groups of replicas lie on the grid's y, at most 65535 of them.
+  if (replicas > 65535 * k_z_group) {
+    throw DeviceError("rank-one ensemble: " + std::to_string(replicas) + " replicas, more than " +
+                      std::to_string(65535 * k_z_group) + " (" + std::to_string(k_z_group) +
+                      " a CUDA block, 65535 blocks)");
+  }
   auto impl = std::make_unique<RankOneEnsemble::Impl>(rows, replicas, diagonal, threads_per_block);
   require_device();
   require_memory(RankOneEnsemble::memory(rows, replicas).needed, "the rank-one ensemble");
