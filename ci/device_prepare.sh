@@ -69,8 +69,11 @@ if [ -x "$cli_build/bin/hmfnet" ] && grep -q '^HMFNET_CUDA:BOOL=ON' "$cli_build/
     grep -q -- '--device cuda: .*run it with --device cpu' <<<"$refusal" \
       || die "the packed CLI did not refuse --device cuda here as expected: $refusal"
   fi
-  # The check's end-to-end script with the CPU in the device's place, on small networks.
-  HMFNET_SIMULATE_DEVICE=cpu HMFNET_SIMULATE_SMALL=1 python3 ci/device_simulate.py "$try" \
+  # The check's end-to-end script with the CPU in the device's place, on small networks, under a
+  # Python with h5py (the device's has it; here it may be Debian's beside another on the PATH).
+  python=python3
+  python3 -c 'import h5py' 2>/dev/null || python=/usr/bin/python3
+  HMFNET_SIMULATE_DEVICE=cpu HMFNET_SIMULATE_SMALL=1 "$python" ci/device_simulate.py "$try" \
     "$try/work" >"$logs/simulate-try.log" 2>&1 \
     || die "ci/device_simulate.py failed here with the CPU in the device's place: $logs/simulate-try.log"
   echo "packed CLI tried: $(tail -n 1 "$logs/simulate-try.log"); needs $(cat "$try/GLIBC_REQUIRED")"

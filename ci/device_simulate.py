@@ -7,9 +7,10 @@ with the CLI that ci/device_pack_cli.sh packed on the CPU machine:
      float64 and float32, leapfrog and yoshida4, a K per replica (--K-across-replicas), on an ER
      network and a weighted one (the sparse force) and on K_N with and without self-loops (the
      rank-one force, 13 and 16 replicas: the CPU's AVX-512 groups whole and partial);
-  2. a checkpoint written by one device and resumed on the other (SIGTERM once the checkpoint of
+  2. --node-data on both forces: the results files' datasets (node data included) equal;
+  3. a checkpoint written by one device and resumed on the other (SIGTERM once the checkpoint of
      the second K exists, then --resume): the points of the uninterrupted run, both ways;
-  3. the rate of both on one larger network (stored entries x replicas x steps / s), and the
+  4. the rate of both on one larger network (stored entries x replicas x steps / s), and the
      device's name and the CPU threads beside it.
 
 Prints one line per case (a case whose command fails is a failed case, with its error) and a
@@ -104,6 +105,38 @@ for loops, replicas in (("--self-loops", "16"), (None, "13")):
                 [kn, "--K-over-Kc", "1.5", "--h", "0.1", "--T", "30", "--transient", "5",
                  "--seed", "2", "--replicas", replicas, "--momenta", "waterbag",
                  "--integrator", "blanes_moan", "--record-stride", "11"])
+
+
+
+def same_files(name, base):
+    """Both devices write the results file (-o); every dataset (points, node data, time series)
+    equal bit for bit (the attributes hold the provenance: device, timings)."""
+    def body():
+        import h5py
+        import numpy as np
+        files = {}
+        for d in ("cpu", device):
+            files[d] = os.path.join(work, f"files-{d}.h5")
+            hmfnet("simulate", *base, "--device", d, "--output", files[d], "--quiet")
+        names, differ = [], []
+        with h5py.File(files["cpu"], "r") as a, h5py.File(files[device], "r") as b:
+            a.visititems(lambda n, o: names.append(n) if isinstance(o, h5py.Dataset) else None)
+            for n in names:
+                if n not in b or not np.array_equal(a[n][()], b[n][()]):
+                    differ.append(n)
+        node = [n for n in names if n.endswith(("R_node", "omega_node", "r_node"))]
+        case(name, not differ and len(node) == 3,
+             f"{len(names)} datasets, differ: {differ[:5]}")
+    guarded(name, body)
+
+
+# Node data (--node-data, every step's y_n read from the device): the results files equal.
+same_files(f"ER --node-data: {device} = cpu",
+           base[:-2] + ["--replicas", "2", "--record-stride", "10", "--node-data"])
+same_files(f"K_N --node-data: {device} = cpu",
+           [os.path.join(work, "k16.h5"), "--K-over-Kc", "1.5", "--h", "0.1", "--T", "20",
+            "--transient", "5", "--seed", "2", "--replicas", "3", "--momenta", "waterbag",
+            "--node-data"])
 
 # Checkpoints across devices: three K of 20000 steps (about a second each on either), the signal
 # once the run's first checkpoint exists (written when the second K starts, or by the 5 s timer).

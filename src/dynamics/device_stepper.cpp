@@ -36,7 +36,6 @@ void require_device_for(const SimulationParameters& params) {
   if (ParallelSession::ranks() > 1) {
     refuse("one MPI rank only (this run has " + std::to_string(ParallelSession::ranks()) + ")");
   }
-  if (params.node_data) refuse("--node-data is not on the device");
   for (std::size_t k = 0; k < params.K.size(); ++k) {
     const std::string method = step_at(params, k).integrator;
     if (!splitting_coefficients(method)) {
@@ -90,11 +89,21 @@ class DeviceStepper : public EnsembleStepper {
             std::move(s.momentum_scale)};
   }
 
-  // Only a blow-up report reads the fields (node data stay on the CPU): the CPU's force at the
-  // device's state, the same bits.
+  // Node data read every step's fields: the device keeps them (keep_fields) and they are copied
+  // here. Otherwise only a blow-up report reads them: the CPU's force at the device's state.
+  // Both are the CPU's bits.
   const std::vector<double>& local_fields() override {
+    if (m_fields_kept) {
+      m_ensemble->fields(m_fields);
+      return m_fields;
+    }
     m_force.evaluate(state(), m_g, m_host_sums);
     return m_force.local_fields();
+  }
+
+  void keep_fields() {
+    m_ensemble->keep_fields();
+    m_fields_kept = true;
   }
 
   long long evaluations() const override { return m_evaluations; }
@@ -108,7 +117,9 @@ class DeviceStepper : public EnsembleStepper {
   bool m_state_current = false;
   std::vector<double> m_K;  // what the device holds
   long long m_evaluations = 0;
-  std::vector<double> m_g;  // local_fields' scratch
+  bool m_fields_kept = false;
+  std::vector<double> m_fields;  // the device's fields, when kept
+  std::vector<double> m_g;       // local_fields' scratch
   ForceSums m_host_sums;
 };
 
@@ -124,6 +135,24 @@ cuda::HostCsr host_csr(const DistributedNetwork& network) {
   return csr;
 }
 
+// The ensemble of `force` on the device: the rank-one force of the complete graph, or the sparse
+// force on the network's rows.
+std::unique_ptr<cuda::DeviceEnsemble> device_ensemble(const DistributedNetwork& network,
+                                                      const CouplingForce& force,
+                                                      const SimulationParameters& params) {
+  const int replicas = static_cast<int>(lanes(params));
+  if (const auto* rank_one = dynamic_cast<const RankOneForce*>(&force)) {
+    const RankOneStructure& s = rank_one->structure();
+    return std::make_unique<cuda::RankOneEnsemble>(s.a, s.diagonal, replicas);
+  }
+  if (!network.columns_are_owned_rows()) refuse("the network's columns are not its rows");
+  const auto& sparse = dynamic_cast<const NetworkForce&>(force);
+  const cuda::DevicePrecision precision = sparse.precision() == ForcePrecision::float64
+                                              ? cuda::DevicePrecision::float64
+                                              : cuda::DevicePrecision::float32;
+  return std::make_unique<cuda::SparseEnsemble>(host_csr(network), replicas, precision);
+}
+
 }  // namespace
 
 std::string cuda_unavailable() {
@@ -137,26 +166,15 @@ std::unique_ptr<EnsembleStepper> make_device_stepper(const DistributedNetwork& n
   require_device_for(params);
   check_network(force);
   if (network.local_size() > INT32_MAX) refuse("more than 2^31 - 1 rows");
-  const int replicas = static_cast<int>(lanes(params));
-  if (const auto* rank_one = dynamic_cast<const RankOneForce*>(&force)) {
-    const RankOneStructure& s = rank_one->structure();
-    return std::make_unique<DeviceStepper>(
-        std::make_unique<cuda::RankOneEnsemble>(s.a, s.diagonal, replicas), force);
-  }
-  if (!network.columns_are_owned_rows()) refuse("the network's columns are not its rows");
-  const auto& sparse = dynamic_cast<const NetworkForce&>(force);
-  const cuda::DevicePrecision precision = sparse.precision() == ForcePrecision::float64
-                                              ? cuda::DevicePrecision::float64
-                                              : cuda::DevicePrecision::float32;
-  return std::make_unique<DeviceStepper>(
-      std::make_unique<cuda::SparseEnsemble>(host_csr(network), replicas, precision), force);
+  auto stepper = std::make_unique<DeviceStepper>(device_ensemble(network, force, params), force);
+  if (params.node_data) stepper->keep_fields();
+  return stepper;
 }
 
 #else
 
 std::string cuda_unavailable() {
-  return "this build has no CUDA backend (configure where nvcc is on the PATH: "
-         "cmake/HmfnetCuda.cmake)";
+  return "built without CUDA (configure where nvcc is on the PATH: cmake/HmfnetCuda.cmake)";
 }
 
 std::unique_ptr<EnsembleStepper> make_device_stepper(const DistributedNetwork& network,

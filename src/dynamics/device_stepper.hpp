@@ -5,11 +5,11 @@
 // the CPU's per-cell arithmetic (kernel_arithmetic.hpp) and summation order, so a run's output
 // is the CPU's bit for bit and a checkpoint written by either resumes on the other. The host holds
 // the schedule, the batch means and the records; per chunk of steps it reads back only each step's
-// order sums.
+// order sums. With node data (which read every step's state and fields) the device also keeps
+// each cell's y_n, and both are copied back each step.
 //
 // Not on the device (each refused by make_device_stepper in one line, before any file is
-// written): more than one MPI rank, node data, and methods that are no kick-drift splitting
-// (rk4).
+// written): more than one MPI rank and methods that are no kick-drift splitting (rk4).
 #include <memory>
 #include <string>
 
@@ -25,7 +25,7 @@ namespace hmfnet {
 std::string cuda_unavailable();
 
 /// What needs no network, checked before it is read: throws ParameterError naming the first
-/// option the device does not take (ranks, node data, the integrator), then a missing device.
+/// option the device does not take (ranks, the integrator), then a missing device.
 void require_device_for(const SimulationParameters& params);
 
 /// The device's stepper for `params` on this rank's rows with `force` (whose kind and precision

@@ -57,7 +57,8 @@ class NetworkForce : public CouplingForce {
   template <typename T>
   void run_rows(const T* weights, const T* column_cs, NodeIndex rows, int replicas,
                 std::vector<double>& g);
-  /// Cuts the columns for `replicas` (rebuilt only when the width changes) and sizes the carry.
+  /// Cuts the columns for `replicas` (rebuilt only when the width changes) and sizes the carry;
+  /// nothing when rows and replicas are those of the last call.
   void prepare_segments(NodeIndex rows, int replicas);
 
   const DistributedNetwork& m_network;
@@ -74,7 +75,9 @@ class NetworkForce : public CouplingForce {
   std::vector<float> m_weights_f32;  // float32: the stored weights (empty for 0/1)
   std::vector<float> m_column_f32;   // float32: the gathered table
   NodeIndex m_segment_request;
-  NodeIndex m_segment_width = -1;  // the width m_segments was cut with (-1: not yet)
+  NodeIndex m_segment_width = -1;   // the width m_segments was cut with (-1: not yet)
+  NodeIndex m_segmented_rows = -1;  // the shape prepare_segments last decided for
+  int m_segmented_replicas = -1;
   ColumnSegments m_segments;
   // Segmented walk: rows x 4 partials x replicas x [cos, sin] in the table's type, and where
   // each row's run stopped.

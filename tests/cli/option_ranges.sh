@@ -33,7 +33,7 @@ declare -A base=(
   ["convert"]="input $net --output $out/converted.h5"
   ["spectrum"]="input $net"
   ["theory"]="input $net --sigma0 0.35 --K-over-Kc 2"
-  ["simulate"]="input $net --K 1 --seed 1 --T 10 --transient 1 --node-data --output $out/sim.h5"
+  ["simulate"]="input $net --K 1 --seed 1 --T 10 --transient 1 --node-data --integrator rk4 --output $out/sim.h5"
   ["demo"]=""
 )
 declare -A group=(

@@ -160,6 +160,16 @@ class HostEnsemble {
   /// Z per replica as [Re, Im] (complete graph).
   const std::vector<double>& z() const { return m_z; }
 
+  /// y_n at the current state, rows x replicas x [Re, Im] (CouplingForce::local_fields).
+  std::vector<double> fields() const {
+    std::vector<double> y;
+    for (const LocalField& f : m_y) {
+      y.push_back(f.re);
+      y.push_back(f.im);
+    }
+    return y;
+  }
+
  private:
   std::size_t cells() const { return static_cast<std::size_t>(m_n) * m_w; }
 

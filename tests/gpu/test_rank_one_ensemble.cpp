@@ -1,9 +1,8 @@
 // The device's rank-one step (rank_one_ensemble.hpp) against the CPU's (host_ensemble.hpp:
 // rank_one_force.cpp's arithmetic in its order), K_N with and without self-loops and A = a a^T
 // with a in [0.5, 1.5]: the state bit for bit over 100 leap-frog steps and 30 of yoshida4, a K
-// per replica; each step's order sums
-// and a record's five sums bit for bit across chunks; the same bits for 64, 256 and 1024
-// threads per block and run to run.
+// per replica; each step's order sums, the fields y_n (node data) and a record's five sums bit
+// for bit across chunks; the same bits for 64, 256 and 1024 threads per block and run to run.
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -27,7 +26,7 @@ constexpr std::int64_t k_n = 5000;
 constexpr int k_replicas = 3;
 
 struct Run {
-  std::vector<double> theta, p, order;
+  std::vector<double> theta, p, order, fields;
   cuda::EnsembleSums sums;
 };
 
@@ -56,10 +55,12 @@ Run device_run(bool self_loops, int threads, const SplittingCoefficients& c, dou
   gpu_test::waterbag(k_n, replicas, 0.6, 21, theta, p);
   cuda::RankOneEnsemble e(weights(disordered), self_loops, replicas, threads);
   e.set_coupling(couplings(replicas));
+  e.keep_fields();  // node data's y_n, compared too
   e.set_state(theta, p);
   Run r;
   for (const std::int64_t chunk : chunks) e.advance(c, h, chunk, &r.order);
   e.get_state(r.theta, r.p);
+  e.fields(r.fields);
   r.sums = e.sums();
   return r;
 }
@@ -75,6 +76,7 @@ Run host_run(bool self_loops, const SplittingCoefficients& c, double h, std::int
   host.advance(c, h, steps, &r.order);
   r.theta = host.theta;
   r.p = host.p;
+  r.fields = host.fields();
   r.sums = host.sums();
   return r;
 }
@@ -83,6 +85,7 @@ void require_same(const Run& a, const Run& b) {
   CHECK(differing(a.theta, b.theta) == 0);
   CHECK(differing(a.p, b.p) == 0);
   CHECK(differing(a.order, b.order) == 0);
+  CHECK(differing(a.fields, b.fields) == 0);
   CHECK(differing(a.sums.order, b.sums.order) == 0);
   CHECK(differing(a.sums.coupling, b.sums.coupling) == 0);
   CHECK(differing(a.sums.kinetic, b.sums.kinetic) == 0);

@@ -301,13 +301,16 @@ TEST_CASE("one or four threads a row: the CPU's bits, one replica and three, wei
               float32 ? cuda::DevicePrecision::float32 : cuda::DevicePrecision::float64, 128);
           CHECK(e.threads_per_row() == (replicas == 1 ? 4 : 1));
           e.set_threads_per_row(per_row);
+          e.keep_fields();  // node data: each cell's y_n kept by both kernels
           e.set_state(theta0, p0);
-          std::vector<double> order, theta, p;
+          std::vector<double> order, theta, p, y;
           e.advance(leap_frog_coefficients(), 0.05, 40, &order);
           e.get_state(theta, p);
+          e.fields(y);
           CHECK(differing(theta, host.theta) == 0);
           CHECK(differing(p, host.p) == 0);
           CHECK(differing(order, host_order) == 0);
+          CHECK(differing(y, host.fields()) == 0);
           CHECK(differing(e.sums().coupling, host.sums().coupling) == 0);
         }
       }
@@ -315,4 +318,6 @@ TEST_CASE("one or four threads a row: the CPU's bits, one replica and three, wei
   }
   cuda::SparseEnsemble e(test_network(), 1, cuda::DevicePrecision::float64);
   CHECK_THROWS_AS(e.set_threads_per_row(2), cuda::DeviceError);
+  std::vector<double> y;
+  CHECK_THROWS_AS(e.fields(y), cuda::DeviceError);  // not kept
 }

@@ -70,6 +70,12 @@ class DeviceEnsemble {
                std::vector<double>* order = nullptr);
   /// The sums at the current state.
   EnsembleSums sums();
+  /// From now on every evaluation also keeps each cell's y_n on the device (2 doubles a cell,
+  /// checked against the free memory), for `fields`: node data read them every step.
+  void keep_fields();
+  /// y_n at the current state, rows x replicas x [Re, Im] (CouplingForce::local_fields's
+  /// layout and bits). Throws DeviceError unless keep_fields was called.
+  void fields(std::vector<double>& y) const;
   /// Waits for the device and reports the first error of its queue.
   void synchronize() const;
 

@@ -205,6 +205,7 @@ void EnsembleCells::set_state(const std::vector<double>& theta, const std::vecto
   }
   m_theta.upload(theta.data(), c);
   m_p.upload(p.data(), c);
+  m_has_state = true;
   refresh();
 }
 
@@ -280,6 +281,22 @@ EnsembleSums EnsembleCells::sums() {
   return s;
 }
 
+void EnsembleCells::keep_fields() {
+  if (m_fields.size() > 0) return;
+  const std::size_t n = 2 * static_cast<std::size_t>(cells());
+  require_memory(n * sizeof(double), "the node data's fields");
+  m_fields.allocate(n);
+  // Every evaluation writes them from now on; with a state already set, one now makes them
+  // current at once.
+  if (m_has_state) evaluate(false);
+}
+
+void EnsembleCells::fields(std::vector<double>& y) const {
+  if (m_fields.size() == 0) throw DeviceError("device ensemble: the fields were not kept");
+  y.resize(m_fields.size());
+  m_fields.download(y.data(), y.size());
+}
+
 DeviceEnsemble::DeviceEnsemble(std::unique_ptr<EnsembleCells> cells) : m_cells(std::move(cells)) {}
 DeviceEnsemble::~DeviceEnsemble() = default;
 DeviceEnsemble::DeviceEnsemble(DeviceEnsemble&&) noexcept = default;
@@ -304,6 +321,10 @@ void DeviceEnsemble::advance(const SplittingCoefficients& splitting, double h, s
 }
 
 EnsembleSums DeviceEnsemble::sums() { return m_cells->sums(); }
+
+void DeviceEnsemble::keep_fields() { m_cells->keep_fields(); }
+
+void DeviceEnsemble::fields(std::vector<double>& y) const { m_cells->fields(y); }
 
 void DeviceEnsemble::synchronize() const { check(cudaDeviceSynchronize(), "device ensemble"); }
 

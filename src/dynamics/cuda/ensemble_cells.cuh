@@ -37,6 +37,9 @@ class EnsembleCells {
   void advance(const SplittingCoefficients& splitting, double h, std::int64_t steps,
                std::vector<double>* order);
   EnsembleSums sums();
+  /// DeviceEnsemble::keep_fields and fields.
+  void keep_fields();
+  void fields(std::vector<double>& y) const;
 
  protected:
   /// g at the current [cos, sin] (cs, and cs32 for a float32 table); with_terms: the terms too.
@@ -45,6 +48,8 @@ class EnsembleCells {
   void block_sums(const double* values, int width);
   std::int64_t sum_blocks() const;
   std::int64_t cells() const { return m_rows * m_replicas; }
+  /// Where `evaluate` writes each cell's y_n: the kept fields, or nullptr.
+  double* fields_out() const { return m_fields.data(); }
   unsigned tpb() const { return static_cast<unsigned>(m_threads); }
   unsigned cell_blocks() const { return blocks_for(static_cast<std::size_t>(cells()), m_threads); }
 
@@ -57,6 +62,9 @@ class EnsembleCells {
   DeviceBuffer<float> m_cs32;
 
  private:
+  DeviceBuffer<double> m_fields;  // cells x [Re, Im] once kept, else empty
+  bool m_has_state = false;
+
   void refresh();
   void order_sums_to(double* out);
   std::vector<double> ordered_sums(const double* values, int width);

@@ -91,7 +91,8 @@ struct FieldArgs {
   double inverse_n;
   bool diagonal;
   double* g;
-  double* terms;  // nullptr, or cells x [|y_n|, Re(e^{-i theta_n} y_n)]
+  double* terms;   // nullptr, or cells x [|y_n|, Re(e^{-i theta_n} y_n)]
+  double* fields;  // nullptr, or cells x [Re y_n, Im y_n] (node data)
 };
 
 // rank_one_force.cpp's field_one for one cell.
@@ -106,6 +107,10 @@ __global__ void __launch_bounds__(1024) field_kernel(FieldArgs f) {
   if (f.terms != nullptr) {
     f.terms[2 * k] = order_term(y);
     f.terms[2 * k + 1] = coupling_term(c, s, y);
+  }
+  if (f.fields != nullptr) {
+    f.fields[2 * k] = y.re;
+    f.fields[2 * k + 1] = y.im;
   }
 }
 
@@ -128,9 +133,10 @@ struct RankOneEnsemble::Impl : EnsembleCells {
     z_total_kernel<<<blocks_for(static_cast<std::size_t>(m_replicas), 64), 64>>>(
         z_partial.data(), z_blocks(m_rows), m_replicas, z.data());
     check_launch("Z total kernel");
-    const FieldArgs f{a.data(),   m_cs.data(), z.data(),
-                      m_replicas, cells(),     1.0 / static_cast<double>(m_rows),
-                      diagonal,   m_g.data(),  with_terms ? m_terms.data() : nullptr};
+    const FieldArgs f{a.data(),    m_cs.data(), z.data(),
+                      m_replicas,  cells(),     1.0 / static_cast<double>(m_rows),
+                      diagonal,    m_g.data(),  with_terms ? m_terms.data() : nullptr,
+                      fields_out()};
     field_kernel<<<cell_blocks(), tpb()>>>(f);
     check_launch("rank-one field kernel");
   }

@@ -30,8 +30,25 @@ struct ForceArgs {
   std::int64_t cells;
   double inverse_n;
   double* g;
-  double* terms;  // nullptr, or cells x [|y_n|, Re(e^{-i theta_n} y_n)]
+  double* terms;   // nullptr, or cells x [|y_n|, Re(e^{-i theta_n} y_n)]
+  double* fields;  // nullptr, or cells x [Re y_n, Im y_n] (node data)
 };
+
+// What both force kernels do with a cell's row sum y: g, and the terms and y where asked
+// (network_force.cpp's finish_row, kernel_arithmetic.hpp).
+template <typename T>
+__device__ void finish_cell(const ForceArgs<T>& a, std::int64_t k, const LocalField& y) {
+  const double c = a.cs[2 * k], s = a.cs[2 * k + 1];
+  a.g[k] = coupling_force(a.inverse_n, c, s, y);
+  if (a.terms != nullptr) {
+    a.terms[2 * k] = order_term(y);
+    a.terms[2 * k + 1] = coupling_term(c, s, y);
+  }
+  if (a.fields != nullptr) {
+    a.fields[2 * k] = y.re;
+    a.fields[2 * k + 1] = y.im;
+  }
+}
 
 // g of one cell from its row's sum (network_force.cpp's rows kernels, kernel_arithmetic.hpp).
 template <typename T>
@@ -40,14 +57,10 @@ __global__ void __launch_bounds__(1024) force_kernel(ForceArgs<T> a) {
   if (k >= a.cells) return;
   const std::int64_t row = k / a.replicas;
   const int lane = static_cast<int>(k % a.replicas);
-  const LocalField y = row_field<T, std::int64_t, std::int32_t>(
-      a.offsets[row], a.offsets[row + 1], a.columns, a.weights, a.table, a.replicas, lane);
-  const double c = a.cs[2 * k], s = a.cs[2 * k + 1];
-  a.g[k] = coupling_force(a.inverse_n, c, s, y);
-  if (a.terms != nullptr) {
-    a.terms[2 * k] = order_term(y);
-    a.terms[2 * k + 1] = coupling_term(c, s, y);
-  }
+  finish_cell(
+      a, k,
+      row_field<T, std::int64_t, std::int32_t>(a.offsets[row], a.offsets[row + 1], a.columns,
+                                               a.weights, a.table, a.replicas, lane));
 }
 
 // The same g with k_row_threads threads a cell (adjacent lanes of one warp): thread j sums the
@@ -90,13 +103,7 @@ __global__ void __launch_bounds__(1024) force_kernel_split(ForceArgs<T> a) {
   const T c_sum = c_pair + __shfl_down_sync(all, c_pair, 2);
   const T s_sum = s_pair + __shfl_down_sync(all, s_pair, 2);
   if (!live || j != 0) return;
-  const LocalField y{static_cast<double>(c_sum), static_cast<double>(s_sum)};
-  const double c = a.cs[2 * k], s = a.cs[2 * k + 1];
-  a.g[k] = coupling_force(a.inverse_n, c, s, y);
-  if (a.terms != nullptr) {
-    a.terms[2 * k] = order_term(y);
-    a.terms[2 * k + 1] = coupling_term(c, s, y);
-  }
+  finish_cell(a, k, LocalField{static_cast<double>(c_sum), static_cast<double>(s_sum)});
 }
 
 // The directed G(N, p) row by row: geometric gaps between successive columns, from a
@@ -172,7 +179,8 @@ struct SparseEnsemble::Impl : EnsembleCells {
                          weights,        table,
                          m_cs.data(),    m_replicas,
                          cells(),        1.0 / static_cast<double>(m_rows),
-                         m_g.data(),     with_terms ? m_terms.data() : nullptr};
+                         m_g.data(),     with_terms ? m_terms.data() : nullptr,
+                         fields_out()};
     if (threads_per_row == 1) {
       force_kernel<T><<<cell_blocks(), tpb()>>>(a);
     } else {
