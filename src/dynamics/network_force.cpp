@@ -352,8 +352,6 @@ void NetworkForce::prepare_segments(NodeIndex rows, int replicas) {
   // automatic rule reads /proc/meminfo and the cache size: decided once per shape (14 us a step
   // measured on ER N = 1000, degree 4, where a whole step took 10 us before the rule).
   if (rows == m_segmented_rows && replicas == m_segmented_replicas) return;
-  m_segmented_rows = rows;
-  m_segmented_replicas = replicas;
   const std::size_t value_bytes =
       m_precision == ForcePrecision::float64 ? sizeof(double) : sizeof(float);
   const NodeIndex width =
@@ -373,6 +371,9 @@ void NetworkForce::prepare_segments(NodeIndex rows, int replicas) {
   m_carry.resize(m_precision == ForcePrecision::float64 ? carried : 0);
   m_carry_f32.resize(m_precision == ForcePrecision::float32 ? carried : 0);
   m_cursor.resize(carried > 0 ? static_cast<std::size_t>(rows) : 0);
+  // Only once all of it is in place: a throw above leaves the next call to decide again.
+  m_segmented_rows = rows;
+  m_segmented_replicas = replicas;
 }
 
 void NetworkForce::prepare(const RotorState& state, std::vector<double>& g, ForceSums& sums) {

@@ -320,4 +320,21 @@ TEST_CASE("one or four threads a row: the CPU's bits, one replica and three, wei
   CHECK_THROWS_AS(e.set_threads_per_row(2), cuda::DeviceError);
   std::vector<double> y;
   CHECK_THROWS_AS(e.fields(y), cuda::DeviceError);  // not kept
+  e.keep_fields();
+  CHECK_THROWS_AS(e.fields(y), cuda::DeviceError);  // no state yet
+  // Kept once a state is set: current at once, and after a record's sums.
+  std::vector<double> theta0, p0;
+  gpu_test::waterbag(test_network().rows, 1, 0.6, 19, theta0, p0);
+  cuda::SparseEnsemble late(test_network(), 1, cuda::DevicePrecision::float64);
+  late.set_state(theta0, p0);
+  late.advance(leap_frog_coefficients(), 0.05, 7);
+  late.keep_fields();
+  HostEnsemble host(test_network(), 1, false);
+  host.set_state(theta0, p0);
+  host.advance(leap_frog_coefficients(), 0.05, 7);
+  late.fields(y);
+  CHECK(differing(y, host.fields()) == 0);
+  static_cast<void>(late.sums());
+  late.fields(y);
+  CHECK(differing(y, host.fields()) == 0);
 }

@@ -293,6 +293,7 @@ void EnsembleCells::keep_fields() {
 
 void EnsembleCells::fields(std::vector<double>& y) const {
   if (m_fields.size() == 0) throw DeviceError("device ensemble: the fields were not kept");
+  if (!m_has_state) throw DeviceError("device ensemble: no state set, so no fields yet");
   y.resize(m_fields.size());
   m_fields.download(y.data(), y.size());
 }
