@@ -175,6 +175,12 @@ BENCHMARK(LeapFrogStep)
     ->ArgsProduct({{10000, 1000000}, {100}, {1, 4, 8}, {1, 2}, {0, 1}})
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
+// B = 2 at 1 thread: the replica count whose segment runs have an AVX2 version besides B = 1
+// (dynamics/segment_runs.hpp; bench/segmented_rows_table.sh).
+BENCHMARK(LeapFrogStep)
+    ->ArgsProduct({{10000, 1000000}, {100}, {2}, {1}, {0, 1}})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(YardstickStep)
     ->ArgsProduct({{10000, 1000000}, {100}, {1, 2}})
     ->UseRealTime()
@@ -183,6 +189,12 @@ BENCHMARK(PlainCsrStep)->Args({10000, 100})->Unit(benchmark::kMillisecond);
 // Args: N, mean degree, replicas, precision, slice KiB (0: unsegmented).
 BENCHMARK(SegmentedStep)
     ->ArgsProduct({{1000000}, {100}, {1, 8}, {0, 1}, {0, 512, 1024, 2048, 4096, 16384}})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+// N = 10^4 (its 160 KiB table in L2 whole) cut as N = 10^6 is (16 segments of ~6 entries a
+// row): what the segmented walk costs where no cache needs it, apart from the misses it avoids.
+BENCHMARK(SegmentedStep)
+    ->ArgsProduct({{10000}, {100}, {1}, {0}, {0, 10}})
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 // Args: N, replicas, threads, self-loops (1: A = 1 1^T, the Antoni-Ruffo HMF; 0: K_N).

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Segmented rows (docs/performance.md, "Segmented rows"): hmfnet's leap-frog step (LeapFrogStep,
-# ER mean degree 100, 1 thread, B = 1 and 8, float64 and float32) at N = 10^4 and 10^6 from two
-# builds, OLD and NEW, alternated in ROUNDS rounds (these machines are noisy: only ratios within
-# a round mean much); one process per binary and N, so each process's peak RSS is that N's.
+# ER mean degree 100, 1 thread, B = 1, 2 and 8 (where a build has no B = 2 rows: '-'), float64
+# and float32) at N = 10^4 and 10^6 from two builds, OLD and NEW, alternated in ROUNDS rounds
+# (these machines are noisy: only ratios within a round mean much); one process per binary and
+# N, so each process's peak RSS is that N's.
 # Prints per row the median rate of each binary (G stored entries x replicas x steps/s), the
 # median of the per-round ratios NEW / OLD, N = 10^6 as a share of N = 10^4, and peak RSS.
 # Usage: bench/segmented_rows_table.sh OLD_BUILD_DIR NEW_BUILD_DIR [ROUNDS (3)] [MIN_TIME (1)]
@@ -19,7 +20,7 @@ for round in $(seq "$rounds"); do
       [ "$which" = new ] && build=$new side_env=${NEW_ENV:-}
       # shellcheck disable=SC2086  # the assignments are words
       /usr/bin/time -f "%M" -o "$out/rss_${which}_${n}_${round}" env $side_env "$build/bin/hmfnet_bench" \
-        --benchmark_filter="^LeapFrogStep/$n/100/(1|8)/1/(0|1)/" \
+        --benchmark_filter="^LeapFrogStep/$n/100/(1|2|8)/1/(0|1)/" \
         --benchmark_min_time="$min_time" --benchmark_format=json \
         >"$out/${which}_${n}_${round}.json" 2>/dev/null
     done
@@ -39,9 +40,12 @@ med = lambda w, n, key: statistics.median(data[(w, n, r)][key] for r in range(1,
 print("%-8s %2s %-7s %8s %8s %9s %14s %9s %9s" % ("N", "B", "prec", "old", "new", "new/old",
       "rounds", "old/1e4", "new/1e4"))
 for n in (10000, 1000000):
-    for b in (1, 8):
+    for b in (1, 2, 8):
         for prec in (0, 1):
             key = (n, 100, b, 1, prec)
+            if any(key not in data[(w, n, 1)] for w in ("old", "new")):
+                print("%-8d %2d %-7s %8s" % (n, b, ("float64", "float32")[prec], "-"))
+                continue
             ratios = [data[("new", n, r)][key] / data[("old", n, r)][key] for r in range(1, rounds + 1)]
             small = (10000, 100, b, 1, prec)
             print("%-8d %2d %-7s %8.3f %8.3f %8.2fx %14s %8.0f%% %8.0f%%" % (

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <string>
 
+#include "dynamics/segment_runs.hpp"
+
 namespace hmfnet {
 
 namespace {
@@ -140,7 +142,7 @@ ColumnSegments::ColumnSegments(const std::vector<EdgeOffset>& row_ptr,
   m_segment_start = std::move(segment_start);
   m_run_start = std::move(run);
   const auto& starts = m_run_start;
-  m_cols.resize(cols.size());
+  m_cols.resize(cols.size() + k_run_padding);  // zeros: column 0, a readable record
 #pragma omp parallel for schedule(static)
   for (NodeIndex r = 0; r < rows; ++r) {
     auto k = row(r).first;

@@ -60,10 +60,10 @@ NodeIndex automatic_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex r
 
 /// The rows cut by columns, as the paper stores them: one CSR per segment (its column indices
 /// in one array, segment after segment, and per segment the start of each row's run). Memory:
-/// nnz x 4 bytes (one more column index array) plus segments x (rows + 1) x 4 bytes (at most
-/// nnz x 4 / k_min_entries_per_segment under the automatic rule, a sixth of the index array). The
-/// weights are not copied: a row's run in a segment continues where its run in the previous segment
-/// ended.
+/// (nnz + k_run_padding) x 4 bytes (one more column index array; the padding: segment_runs.hpp)
+/// plus segments x (rows + 1) x 4 bytes (at most nnz x 4 / k_min_entries_per_segment under the
+/// automatic rule, a sixth of the index array). The weights are not copied: a row's run in a
+/// segment continues where its run in the previous segment ended.
 class ColumnSegments {
  public:
   /// One segment: the unblocked kernel.

@@ -1,11 +1,15 @@
 #include "dynamics/network_force.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
 
 #include "core/error.hpp"
 #include "dynamics/ordered_sum.hpp"
+#include "dynamics/segment_runs.hpp"
 #include "dynamics/sincos.hpp"
 #include "dynamics/team.hpp"
 
@@ -28,21 +32,6 @@ struct RowKernelArgs {
   double* y;
   double* terms;  // rows x replicas x [|y_n|, Re(e^{-i theta_n} y_n)]
 };
-
-// acc[b] += w q[b] for the n values of one gathered record. The lanes are independent sums, so
-// vectorising them keeps each one's order (the same bits). GCC 12 leaves the float32 lanes
-// scalar (addss and shuffles) unless told: `omp simd` doubles float32 B = 4 (bench/
-// ensemble_table.sh); on float64 it measured ~5% slower at B = 8, so float64 keeps the
-// compiler's own choice.
-template <typename T>
-inline void add_record(T* acc, const T* q, T w, int n) {
-  if constexpr (sizeof(T) == sizeof(float)) {
-#pragma omp simd
-    for (int b = 0; b < n; ++b) acc[b] += w * q[b];
-  } else {
-    for (int b = 0; b < n; ++b) acc[b] += w * q[b];
-  }
-}
 
 // Replica count B fixed at compile time so the inner loops unroll and vectorise; `runtime_b`
 // serves other counts. Weighted is a template flag so the 0/1 loop reads no values.
@@ -165,21 +154,6 @@ struct SegmentArgs {
   std::uint32_t* cursor;
 };
 
-// Adds entries place .. place + n - 1 of a row whose first `full` entries precede its tail to
-// the row's carried partials (in L1 while the run lasts). One loop whatever the run's first
-// place: runs are short (~6 entries at N = 10^6, degree 100), so a rotation of four register
-// accumulators with its remainder branches measured no faster (bench SegmentedStep, Intel Xeon).
-template <typename T, int B, bool Weighted>
-inline void add_run(T* p, const T* table, const NodeIndex* cols, const T* w, EdgeOffset place,
-                    EdgeOffset n, EdgeOffset full, int nb) {
-  const auto record = 2 * static_cast<std::ptrdiff_t>(B > 0 ? B : nb);
-  const EdgeOffset split = std::clamp<EdgeOffset>(full - place, 0, n);
-  for (EdgeOffset i = 0; i < n; ++i) {
-    T* acc = i < split ? p + ((place + i) & 3) * record : p;
-    add_record(acc, table + record * cols[i], Weighted ? w[i] : T(1), static_cast<int>(record));
-  }
-}
-
 // Row r's outputs from its four carried partial sums of every replica (partial j of value v at
 // p[j * stride + v]), combined as rows_kernel combines them: (s0 + s1) + (s2 + s3) in T.
 template <typename T>
@@ -201,35 +175,42 @@ inline void finish_row(const RowKernelArgs<T>& a, NodeIndex r, const T* p, std::
   }
 }
 
-// Rows walked once per segment, each thread the same rows in every segment (static schedule of
-// the same loop: OpenMP gives a thread the same iterations), so the carry needs no barrier
-// between segments; one barrier at the end, as the unblocked loop has.
+// Rows walked once per segment, each thread the same block of rows in every segment, so the
+// carry needs no barrier between segments; one barrier at the end, as the unblocked loop has.
 template <typename T, int B, bool Weighted>
 void segmented_rows_kernel(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, NodeIndex rows,
                            int runtime_b) {
   const int nb = B > 0 ? B : runtime_b;
   const std::size_t record = 2 * static_cast<std::size_t>(nb), stride = 4 * record;
   const int count = sa.segments->count();
+  const auto threads = static_cast<std::int64_t>(omp_get_num_threads());
+  const auto thread = static_cast<std::int64_t>(omp_get_thread_num());
+  const auto r0 = static_cast<NodeIndex>(rows * thread / threads);
+  const auto r1 = static_cast<NodeIndex>(rows * (thread + 1) / threads);
+  constexpr bool runs_kernel = !Weighted && (B == 1 || B == 2);
   for (int seg = 0; seg < count; ++seg) {
     const std::uint32_t* run = sa.segments->run_start(seg);
     const NodeIndex* cols = sa.segments->cols(seg);
     const bool first = seg == 0, last = seg + 1 == count;
-#pragma omp for schedule(static) nowait
-    for (NodeIndex r = 0; r < rows; ++r) {
-      T* p = sa.carry + static_cast<std::size_t>(r) * stride;
-      if (first) std::fill(p, p + stride, T(0));
-      const EdgeOffset begin = a.row_ptr[r], degree = a.row_ptr[r + 1] - begin;
-      const EdgeOffset place = first ? 0 : sa.cursor[r];
-      const EdgeOffset n = run[r + 1] - run[r];
-      const T* w = Weighted ? a.weights + begin + place : nullptr;
-      add_run<T, B, Weighted>(p, a.column_cs, cols + run[r], w, place, n, degree / 4 * 4, nb);
-      if (last) {
-        finish_row(a, r, p, record, nb);
-      } else {
-        sa.cursor[r] = static_cast<std::uint32_t>(place + n);
+    if constexpr (runs_kernel) {
+      const SegmentPass<T> pass{a.row_ptr, run,       cols,  a.column_cs,
+                                sa.carry,  sa.cursor, first, last};
+      add_segment_runs(pass, nb, r0, r1, true);
+    } else {
+      for (NodeIndex r = r0; r < r1; ++r) {
+        T* p = sa.carry + static_cast<std::size_t>(r) * stride;
+        if (first) std::fill(p, p + stride, T(0));
+        const EdgeOffset begin = a.row_ptr[r], degree = a.row_ptr[r + 1] - begin;
+        const EdgeOffset place = first ? 0 : sa.cursor[r];
+        const EdgeOffset n = run[r + 1] - run[r];
+        const T* w = Weighted ? a.weights + begin + place : nullptr;
+        add_run<T, B, Weighted>(p, a.column_cs, cols + run[r], w, place, n, degree / 4 * 4, nb);
+        if (!last) sa.cursor[r] = static_cast<std::uint32_t>(place + n);
       }
     }
   }
+  for (NodeIndex r = r0; r < r1; ++r)
+    finish_row(a, r, sa.carry + static_cast<std::size_t>(r) * stride, record, nb);
 #pragma omp barrier
 }
 

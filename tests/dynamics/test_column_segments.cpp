@@ -1,6 +1,6 @@
 // CSR segmenting of the sparse force kernel (dynamics/column_segments.hpp): the segmented walk
 // equals the unblocked one bit for bit, for forces and for whole trajectories, at segment widths
-// from one column to nearly all of them, 1 and 2 threads, float64 and float32, 1, 3 and 8
+// from one column to nearly all of them, 1 and 2 threads, float64 and float32, 1, 2, 3 and 8
 // replicas, 0/1 and weighted rows; on 2 ranks (label mpi) the same with ghost columns. The
 // widths are forced small so that networks of a few hundred nodes take many segments.
 #include <omp.h>
@@ -70,7 +70,7 @@ TEST_CASE("segmented force equals the unblocked force bit for bit [ER N=600, wid
   for (const Network* net : {&plain, &heavy}) {
     const DistributedNetwork d(*net);
     for (const ForcePrecision precision : {ForcePrecision::float64, ForcePrecision::float32}) {
-      for (const int replicas : {1, 3, 8}) {
+      for (const int replicas : {1, 2, 3, 8}) {
         const RotorState s = state(d, replicas);
         const Evaluation unblocked = evaluate(d, precision, k_unsegmented, s);
         REQUIRE(unblocked.segments == 1);
@@ -92,25 +92,30 @@ TEST_CASE("segmented force equals the unblocked force bit for bit [ER N=600, wid
 
 TEST_CASE("segmented leap-frog trajectories equal unblocked ones bit for bit [ER N=400, 40 steps]",
           "[column_segments]") {
-  const Network net = test::pair_weighted(erdos_renyi({400, 0.04, 23}));
-  const DistributedNetwork d(net);
-  for (const ForcePrecision precision : {ForcePrecision::float64, ForcePrecision::float32}) {
-    for (const int replicas : {1, 8}) {
-      for (const int threads : {1, 2}) {
-        const Threads scope(threads);
-        const auto run = [&](NodeIndex width) {
-          NetworkForce force(d, precision, width);
-          RotorState s = state(d, replicas);
-          ForceEvaluation f(force);
-          f.update(s);
-          const std::vector<double> K(static_cast<std::size_t>(replicas), 40.0);
-          for (int step = 0; step < 40; ++step) LeapFrog().step(s, 0.05, K, f);
-          return s;
-        };
-        const RotorState unblocked = run(k_unsegmented), cut = run(29);
-        INFO(to_string(precision) << ", B = " << replicas << ", " << threads << " thread(s)");
-        CHECK(cut.theta == unblocked.theta);
-        CHECK(cut.p == unblocked.p);
+  const Network plain = erdos_renyi({400, 0.04, 23});
+  const Network heavy = test::pair_weighted(plain);
+  for (const Network* net : {&plain, &heavy}) {
+    const DistributedNetwork d(*net);
+    for (const ForcePrecision precision : {ForcePrecision::float64, ForcePrecision::float32}) {
+      for (const int replicas : {1, 2, 8}) {
+        for (const int threads : {1, 2}) {
+          const Threads scope(threads);
+          const auto run = [&](NodeIndex width) {
+            NetworkForce force(d, precision, width);
+            RotorState s = state(d, replicas);
+            ForceEvaluation f(force);
+            f.update(s);
+            const std::vector<double> K(static_cast<std::size_t>(replicas), 40.0);
+            for (int step = 0; step < 40; ++step) LeapFrog().step(s, 0.05, K, f);
+            return s;
+          };
+          const RotorState unblocked = run(k_unsegmented), cut = run(29);
+          INFO((net->weighted() ? "weighted" : "0/1")
+               << ", " << to_string(precision) << ", B = " << replicas << ", " << threads
+               << " thread(s)");
+          CHECK(cut.theta == unblocked.theta);
+          CHECK(cut.p == unblocked.p);
+        }
       }
     }
   }

@@ -1,0 +1,85 @@
+#pragma once
+// One segment's pass of the segmented sparse kernel (column_segments.hpp, network_force.cpp):
+// each row's run of entries in the segment added to the row's four carried partial sums of
+// every replica. At N = 10^6, degree 100 a run is ~6 entries, and the scalar loop took ~15 ns a
+// run on the Intel Xeon of docs/performance.md: instructions, not misses (N = 10^4 cut into 16
+// segments with its table in L2 ran at 0.41 G entries/s against 2.0 uncut; bench
+// SegmentedStep/10000/100/1/0/10). The AVX2 version takes a run's entries four at a
+// time, entry (j - place) mod 4 of each block into partial j, the slots past the run's end
+// masked to +0.0: a partial starts at +0.0 and a sum of two values is -0.0 only when both are,
+// so a partial is never -0.0 and adding +0.0 leaves its bits (x + 0.0 = x for every other x,
+// inf and NaN included). The same additions in the same order as the scalar loop: the same bits
+// (tests/dynamics/test_segment_runs.cpp).
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+
+#include "network/network.hpp"
+
+namespace hmfnet {
+
+/// acc[b] += w q[b] for the n values of one gathered record. The lanes are independent sums, so
+/// vectorising them keeps each one's order (the same bits). GCC 12 leaves the float32 lanes
+/// scalar (addss and shuffles) unless told: `omp simd` doubles float32 B = 4 (bench/
+/// ensemble_table.sh); on float64 it measured ~5% slower at B = 8, so float64 keeps the
+/// compiler's own choice.
+template <typename T>
+inline void add_record(T* acc, const T* q, T w, int n) {
+  if constexpr (sizeof(T) == sizeof(float)) {
+#pragma omp simd
+    for (int b = 0; b < n; ++b) acc[b] += w * q[b];
+  } else {
+    for (int b = 0; b < n; ++b) acc[b] += w * q[b];
+  }
+}
+
+/// Adds entries place .. place + n - 1 of a row whose first `full` entries precede its last
+/// d mod 4 to the row's carried partials p (partial j of value v at p[j x record + v]): entry
+/// k < full into partial k mod 4, the others into partial 0, as the unblocked kernels sum them.
+/// The scalar loop, for every replica count and for weighted networks: one loop whatever the
+/// run's first place (a rotation of four register accumulators with its remainder branches
+/// measured no faster, bench SegmentedStep, Intel Xeon).
+template <typename T, int B, bool Weighted>
+inline void add_run(T* p, const T* table, const NodeIndex* cols, const T* w, EdgeOffset place,
+                    EdgeOffset n, EdgeOffset full, int nb) {
+  const auto record = 2 * static_cast<std::ptrdiff_t>(B > 0 ? B : nb);
+  const EdgeOffset split = std::clamp<EdgeOffset>(full - place, 0, n);
+  for (EdgeOffset i = 0; i < n; ++i) {
+    T* acc = i < split ? p + ((place + i) & 3) * record : p;
+    add_record(acc, table + record * cols[i], Weighted ? w[i] : T(1), static_cast<int>(record));
+  }
+}
+
+/// Entries ColumnSegments keeps after its last column index: the two blocks of four that a run
+/// takes at least may read up to seven past its end (their records are loaded, masked, and
+/// never added).
+inline constexpr std::size_t k_run_padding = 8;
+
+/// One segment's pass, as the kernel hands it over.
+template <typename T>
+struct SegmentPass {
+  const EdgeOffset* row_ptr;  // the CSR: a row's degree fixes where its last d mod 4 entries begin
+  const std::uint32_t* run;   // where each row's run starts in `cols` (rows + 1)
+  const NodeIndex* cols;      // the segment's column indices, k_run_padding readable after them
+  const T* table;             // the gathered [cos, sin] of every column, 2B values a column
+  T* carry;                   // rows x 4 partials x 2B values
+  std::uint32_t* cursor;      // rows: the place in its row where each row's next run begins
+  bool first;                 // the carry starts at +0.0 and the runs at place 0
+  bool last;                  // the cursor is not written
+};
+
+/// Whether add_segment_runs runs its AVX2 version for `replicas` replicas of T on this CPU, in
+/// the instruction set that sincos_isa() allows (HMFNET_SINCOS_ISA=baseline: none): records of 8
+/// or 16 bytes (float64 B = 1, float32 B = 1 and 2), where it measured faster than the scalar
+/// loop (docs/performance.md, "Segment runs in AVX2").
+template <typename T>
+bool segment_runs_vectorised(int replicas);
+
+/// Rows [r0, r1) of one segment on a 0/1 network, `replicas` 1 or 2 (a precondition: it runs
+/// inside a thread team, where nothing may throw): the AVX2 version where `vector` and
+/// segment_runs_vectorised, else the scalar loop; the same bits either way.
+template <typename T>
+void add_segment_runs(const SegmentPass<T>& pass, int replicas, NodeIndex r0, NodeIndex r1,
+                      bool vector);
+
+}  // namespace hmfnet
