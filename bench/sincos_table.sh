@@ -3,7 +3,8 @@
 # with this tree's src/dynamics/sincos.cpp and with REV's (default b72fe30, the last commit
 # before the AVX-512 version), timed alternately in one process beside SLEEF's AVX-512 sincos
 # where Debian's libsleef-dev is installed (a benchmark's comparison only: hmfnet does not link
-# it), then numpy's sin and cos on the same 4096 angles. Needs g++ and python3 with numpy.
+# it), then numpy's sin and cos on the same 4096 angles. Needs g++ and python3 with numpy
+# (PYTHON: the interpreter, default python3).
 # Usage: bench/sincos_table.sh [REV]
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -31,7 +32,7 @@ g++ "${flags[@]}" -I"$root/src" "$root/bench/sincos_versions.cpp" "$tmp/before.o
   "${sleef[@]}" -o "$tmp/sincos_versions"
 lscpu | sed -n 's/^Model name: *//p'
 "$tmp/sincos_versions"
-python3 - <<'PY'
+"${PYTHON:-python3}" - <<'PY'
 import time
 import numpy as np
 x = np.random.default_rng(1).uniform(-100.0, 100.0, 4096)
