@@ -4,11 +4,12 @@
 // every replica. At N = 10^6, degree 100 a run is ~6 entries, and the scalar loop took ~15 ns a
 // run on the Intel Xeon of docs/performance.md: instructions, not misses (N = 10^4 cut into 16
 // segments with its table in L2 ran at 0.41 G entries/s against 2.0 uncut; bench
-// SegmentedStep/10000/100/1/0/10). The AVX2 version takes a run's entries four at a
-// time, entry (j - place) mod 4 of each block into partial j, the slots past the run's end
-// masked to +0.0: a partial starts at +0.0 and a sum of two values is -0.0 only when both are,
-// so a partial is never -0.0 and adding +0.0 leaves its bits (x + 0.0 = x for every other x,
-// inf and NaN included). The same additions in the same order as the scalar loop: the same bits
+// SegmentedStep/10000/100/1/0/10). The AVX2 version takes a run's entries four at a time, entry
+// (j - place) mod 4 of each block into partial j, the slots past the run's end masked to +0.0:
+// a partial starts at +0.0 and, rounding to nearest, a sum of two values is -0.0 only when both
+// are, so a partial is never -0.0 and adding +0.0 leaves its bits (x + 0.0 = x for every other
+// x, inf and quiet NaN included; the partials are sums, never signalling NaNs). The same
+// additions in the same order as the scalar loop: the same bits
 // (tests/dynamics/test_segment_runs.cpp).
 #include <algorithm>
 #include <cstddef>
