@@ -187,26 +187,19 @@ void segmented_rows_kernel(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, 
   const auto thread = static_cast<std::int64_t>(omp_get_thread_num());
   const auto r0 = static_cast<NodeIndex>(rows * thread / threads);
   const auto r1 = static_cast<NodeIndex>(rows * (thread + 1) / threads);
-  constexpr bool runs_kernel = !Weighted && (B == 1 || B == 2);
   for (int seg = 0; seg < count; ++seg) {
-    const std::uint32_t* run = sa.segments->run_start(seg);
-    const NodeIndex* cols = sa.segments->cols(seg);
-    const bool first = seg == 0, last = seg + 1 == count;
-    if constexpr (runs_kernel) {
-      const SegmentPass<T> pass{a.row_ptr, run,       cols,  a.column_cs,
-                                sa.carry,  sa.cursor, first, last};
+    const SegmentPass<T> pass{a.row_ptr,
+                              sa.segments->run_start(seg),
+                              sa.segments->cols(seg),
+                              a.column_cs,
+                              sa.carry,
+                              sa.cursor,
+                              seg == 0,
+                              seg + 1 == count};
+    if constexpr (!Weighted && (B == 1 || B == 2)) {
       add_segment_runs(pass, nb, r0, r1, true);
     } else {
-      for (NodeIndex r = r0; r < r1; ++r) {
-        T* p = sa.carry + static_cast<std::size_t>(r) * stride;
-        if (first) std::fill(p, p + stride, T(0));
-        const EdgeOffset begin = a.row_ptr[r], degree = a.row_ptr[r + 1] - begin;
-        const EdgeOffset place = first ? 0 : sa.cursor[r];
-        const EdgeOffset n = run[r + 1] - run[r];
-        const T* w = Weighted ? a.weights + begin + place : nullptr;
-        add_run<T, B, Weighted>(p, a.column_cs, cols + run[r], w, place, n, degree / 4 * 4, nb);
-        if (!last) sa.cursor[r] = static_cast<std::uint32_t>(place + n);
-      }
+      scalar_segment_runs<T, B, Weighted>(pass, a.weights, nb, r0, r1);
     }
   }
   for (NodeIndex r = r0; r < r1; ++r)

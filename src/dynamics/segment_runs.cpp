@@ -13,11 +13,11 @@ namespace hmfnet {
 
 namespace {
 
-// Where a row's last d mod 4 entries begin in the row, and its run in this segment.
+// A row's run in this segment: where it starts in the row, its length, and how many of its
+// entries come before the row's last d mod 4.
 struct Run {
   EdgeOffset place;  // the run's first entry's place in the row
   EdgeOffset n;      // entries in the run
-  EdgeOffset full;   // the row's entries before its last d mod 4
   EdgeOffset split;  // the run's entries before the row's last d mod 4
 };
 
@@ -26,20 +26,7 @@ inline Run run_of(const SegmentPass<T>& pass, NodeIndex r) {
   const EdgeOffset place = pass.first ? 0 : pass.cursor[r];
   const EdgeOffset n = pass.run[r + 1] - pass.run[r];
   const EdgeOffset full = (pass.row_ptr[r + 1] - pass.row_ptr[r]) / 4 * 4;
-  return {place, n, full, std::clamp<EdgeOffset>(full - place, 0, n)};
-}
-
-template <typename T, int B>
-void scalar_runs(const SegmentPass<T>& pass, NodeIndex r0, NodeIndex r1) {
-  constexpr std::size_t stride = 8 * static_cast<std::size_t>(B);
-  for (NodeIndex r = r0; r < r1; ++r) {
-    T* p = pass.carry + static_cast<std::size_t>(r) * stride;
-    if (pass.first) std::fill(p, p + stride, T(0));
-    const Run run = run_of(pass, r);
-    add_run<T, B, false>(p, pass.table, pass.cols + pass.run[r], nullptr, run.place, run.n,
-                         run.full, B);
-    if (!pass.last) pass.cursor[r] = static_cast<std::uint32_t>(run.place + run.n);
-  }
+  return {place, n, std::clamp<EdgeOffset>(full - place, 0, n)};
 }
 
 #if defined(HMFNET_SEGMENT_RUNS_AVX2)
@@ -158,7 +145,7 @@ void runs(const SegmentPass<T>& pass, NodeIndex r0, NodeIndex r1, bool vector) {
 #else
   static_cast<void>(vector);
 #endif
-  scalar_runs<T, B>(pass, r0, r1);
+  scalar_segment_runs<T, B, false>(pass, nullptr, B, r0, r1);
 }
 
 }  // namespace

@@ -69,6 +69,26 @@ struct SegmentPass {
   bool last;                  // the cursor is not written
 };
 
+/// Rows [r0, r1) of one segment in the scalar loop, for every replica count (B > 0 fixed at
+/// compile time, 0: nb at run time) and for weighted rows (`weights`: the CSR's, nullptr on a
+/// 0/1 network).
+template <typename T, int B, bool Weighted>
+inline void scalar_segment_runs(const SegmentPass<T>& pass, const T* weights, int nb, NodeIndex r0,
+                                NodeIndex r1) {
+  const std::size_t stride = 8 * static_cast<std::size_t>(B > 0 ? B : nb);
+  for (NodeIndex r = r0; r < r1; ++r) {
+    T* p = pass.carry + static_cast<std::size_t>(r) * stride;
+    if (pass.first) std::fill(p, p + stride, T(0));
+    const EdgeOffset begin = pass.row_ptr[r], degree = pass.row_ptr[r + 1] - begin;
+    const EdgeOffset place = pass.first ? 0 : pass.cursor[r];
+    const EdgeOffset n = pass.run[r + 1] - pass.run[r];
+    const T* w = Weighted ? weights + begin + place : nullptr;
+    add_run<T, B, Weighted>(p, pass.table, pass.cols + pass.run[r], w, place, n, degree / 4 * 4,
+                            nb);
+    if (!pass.last) pass.cursor[r] = static_cast<std::uint32_t>(place + n);
+  }
+}
+
 /// Whether add_segment_runs runs its AVX2 version for `replicas` replicas of T on this CPU, in
 /// the instruction set that sincos_isa() allows (HMFNET_SINCOS_ISA=baseline: none): records of 8
 /// or 16 bytes (float64 B = 1, float32 B = 1 and 2), where it measured faster than the scalar
