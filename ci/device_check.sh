@@ -11,9 +11,12 @@
 # Environment: OUT (logs; ./device-out when unset), HMFNET_DEVICE_BUILD (scratch build folder,
 # /tmp/hmfnet-device-build), HMFNET_DEVICE_BUDGET_S (seconds for the whole check, 450: each step's
 # time limit is cut to what is left of it, so the table is printed inside an 8-minute call);
-# the campaign's HMFNET_QSS_SIZES, HMFNET_QSS_LIVES (3), HMFNET_QSS_LIMIT_S (its share, 260 s)
-# and HMFNET_QSS_RESUME (a qss_gpu_resume.bin to go on from: an earlier call's stays at
-# $build/qss/ on a warm machine).
+# the campaign's HMFNET_QSS_SIZES, HMFNET_QSS_LIVES (3), HMFNET_QSS_LIMIT_S (its share, 260 s),
+# HMFNET_QSS_BATCH (rotors a thread loads together: 1, 4 or 8, the same bits) and
+# HMFNET_QSS_RESUME (a qss_gpu_resume.bin to go on from: an earlier call's stays at
+# $build/qss/ on a warm machine); HMFNET_DEVICE_CHECKS (the checks to run, space-separated
+# names from the list `checks` below, all of them when unset: a second call on a warm machine
+# that only goes on with the campaign names check_qss alone).
 #
 # A new check is one function that runs something from "$build" and calls `record` once per
 # result, added to the list `checks` below. $OUT brings back at most 8 files, two folders deep:
@@ -188,7 +191,7 @@ check_qss() {
   rm -f "$dir"/qss_gpu.json "$dir"/qss_gpu.f64
   bounded "$limit" "$log" "$bin_dir/hmfnet_gpu_qss_lifetime" \
     --sizes "${HMFNET_QSS_SIZES:-20000,10000,5000,2000,1600,1000}" --replicas 32 \
-    --lives "${HMFNET_QSS_LIVES:-3}" \
+    --lives "${HMFNET_QSS_LIVES:-3}" --batch "${HMFNET_QSS_BATCH:-4}" \
     --budget-s "$budget" --out "$dir" "${resume[@]}" || rc=$?
   for f in qss_gpu.json qss_gpu.f64; do [ ! -f "$dir/$f" ] || cp "$dir/$f" "$OUT/"; done
   [ ! -f "$dir/qss_gpu_resume.bin" ] || echo "resume file: $dir/qss_gpu_resume.bin" >>"$log"
@@ -242,7 +245,11 @@ check_simulate() {
   esac
 }
 
-checks=(check_gpu_label check_simulate check_bench check_qss_resume check_qss)
+all_checks="check_gpu_label check_simulate check_bench check_qss_resume check_qss"
+read -r -a checks <<<"${HMFNET_DEVICE_CHECKS:-$all_checks}"
+for c in "${checks[@]}"; do
+  [[ " $all_checks " == *" $c "* ]] || { echo "device_check: unknown check '$c' in HMFNET_DEVICE_CHECKS (known: $all_checks)" >&2; exit 2; }
+done
 
 echo "== device"
 show_device

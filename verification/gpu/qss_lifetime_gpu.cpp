@@ -14,11 +14,13 @@
 //
 //   hmfnet_gpu_qss_lifetime [--sizes 1000,2000,...] [--replicas 32] [--lives 3]
 //                           [--budget-s 200] [--out DIR] [--resume FILE] [--chunks K]
-// (--chunks: stop after K launches, budget or not; for tests.) Writes DIR/qss_gpu.json
-// (parameters, per size the steps done and the records written, the device, the wall time),
-// DIR/qss_gpu.f64 (per size in order: R_mean then energy, each replicas x records, little-endian
-// doubles) and, while a size is unfinished, DIR/qss_gpu_resume.bin (qss_resume_file.hpp).
-// paper/scripts/qss_lifetime_gpu.py turns the first two into
+//                           [--batch 4]
+// (--chunks: stop after K launches, budget or not; for tests. --batch: rotors a thread loads
+// together, 1, 4 or 8, CompleteGraphEnsembles::set_batch; the same bits whichever.) Writes
+// DIR/qss_gpu.json (parameters, per size the steps done and the records written, the device, the
+// wall time), DIR/qss_gpu.f64 (per size in order: R_mean then energy, each replicas x records,
+// little-endian doubles) and, while a size is unfinished, DIR/qss_gpu_resume.bin
+// (qss_resume_file.hpp). paper/scripts/qss_lifetime_gpu.py turns the first two into
 // paper/full/beyond/data/qss_lifetime_gpu.h5 and the figure. Exit 77 without a usable device.
 #include <algorithm>
 #include <chrono>
@@ -164,6 +166,7 @@ int main(int argc, char** argv) {
   int replicas = 32;
   double lives = 3.0, budget = 200.0;
   std::int64_t chunk = 100000, chunks = 0;
+  int batch = 4;
   std::string out = ".", resume;
   if (argc % 2 == 0) {
     std::fprintf(stderr, "hmfnet_gpu_qss_lifetime: option %s has no value\n", argv[argc - 1]);
@@ -187,15 +190,18 @@ int main(int argc, char** argv) {
       resume = value;
     } else if (key == "--chunks") {
       chunks = std::stoll(value);
+    } else if (key == "--batch") {
+      batch = std::stoi(value);
     } else {
       std::fprintf(stderr, "hmfnet_gpu_qss_lifetime: unknown option %s\n", key.c_str());
       return 2;
     }
   }
-  if (replicas < 1 || !(lives > 0.0) || chunk < 1 || chunks < 0 || sizes.empty()) {
+  if (replicas < 1 || !(lives > 0.0) || chunk < 1 || chunks < 0 || sizes.empty() ||
+      (batch != 1 && batch != 4 && batch != 8)) {
     std::fprintf(stderr,
                  "hmfnet_gpu_qss_lifetime: --replicas and --chunk must be >= 1, --lives > 0, "
-                 "--chunks >= 0 and --sizes not empty\n");
+                 "--chunks >= 0, --batch 1, 4 or 8 and --sizes not empty\n");
     return 2;
   }
   std::string why;
@@ -215,6 +221,7 @@ int main(int argc, char** argv) {
       systems.push_back({n, replicas, 1.0, steps / k_records, k_records});
     }
     cuda::CompleteGraphEnsembles e(systems);
+    e.set_batch(batch);
     for (std::size_t s = 0; s < sizes.size(); ++s) {
       std::vector<double> theta, p;
       start(sizes[s], replicas, theta, p);
@@ -249,6 +256,7 @@ int main(int argc, char** argv) {
          << "  \"h\": " << k_h << ",\n  \"U\": " << k_U << ",\n  \"K\": 1,\n"
          << "  \"replicas\": " << replicas << ",\n  \"lives\": " << lives << ",\n"
          << "  \"budget_s\": " << budget << ",\n  \"wall_s\": " << wall << ",\n"
+         << "  \"batch\": " << batch << ",\n"
          << "  \"resumed_from\": \"" << json_escaped(resume) << "\",\n"
          << "  \"records\": " << k_records << ",\n"
          << "  \"seeds\": \"7000 + 100 N + replica (rotor_state.cpp draw)\",\n  \"sizes\": [\n";
