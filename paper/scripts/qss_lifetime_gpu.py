@@ -11,8 +11,11 @@ verification/gpu/qss_lifetime_gpu.cpp (ci/device_check.sh). Two readings of the 
 Both are read globally (all N) and locally (successive pairs of N), so that a drift of the
 exponent with N shows in either.
 
-  python3 qss_lifetime_gpu.py --raw DIR --h5 F.h5 [--commit C] [--extend OLD.h5 [--replace]]
+  python3 qss_lifetime_gpu.py --raw DIR[,DIR2...] --h5 F.h5 [--commit C] [--extend OLD.h5 [--replace]]
                                                                  # device output -> HDF5
+Several DIRs are the calls of one run, each going on from the one before (--resume): the last
+call's records hold the whole run; they are taken once every earlier call's records are checked
+equal to their start (bit for bit in float32), and the run's wall time is the calls' sum.
   python3 qss_lifetime_gpu.py --data DIR --out FIGDIR            # HDF5 -> figure and table
 With --extend, the sizes of OLD.h5 are kept where the new run went no further; a size in both
 keeps the longer run, after its records over the common stretch are checked equal (bit for
@@ -82,6 +85,36 @@ def read_raw(raw, commit):
     return meta, sizes
 
 
+def read_chain(raws, commit):
+    """read_raw of the calls of one run, each resumed from the one before: the last call's
+    sizes, checked against every earlier call's records, with the calls' wall and budget summed."""
+    meta, sizes = read_raw(raws[0], commit)
+    wall, budget = meta["wall_s"], meta["budget_s"]
+    for before, raw in zip(raws, raws[1:]):
+        later, later_sizes = read_raw(raw, commit)
+        if not later.get("resumed_from"):
+            raise SystemExit(f"{raw}: its run did not resume another (qss_gpu.json's resumed_from)")
+        for key in SHARED_KEYS + ("lives", "records"):
+            if later[key] != meta[key]:
+                raise SystemExit(f"{before} has {key} = {meta[key]}, {raw} {later[key]}: not one run")
+        if set(later_sizes) != set(sizes):
+            raise SystemExit(f"{before} and {raw} hold other sizes: not one run")
+        for n, (attrs, R, E0, drift) in sizes.items():
+            a2, R2, E02, drift2 = later_sizes[n]
+            w = R.shape[1]
+            if a2["record_every"] != attrs["record_every"] or R2.shape[1] < w or \
+                    not (np.array_equal(R2[:, :w], R) and np.array_equal(E02, E0)
+                         and np.array_equal(drift2[:, :w], drift)):
+                raise SystemExit(f"N = {n}: {raw}'s first {w} records differ from {before}'s: "
+                                 "not the run it resumed")
+        wall, budget = wall + later["wall_s"], budget + later["budget_s"]
+        meta, sizes = later, later_sizes
+    meta.update(wall_s=wall, budget_s=budget)
+    for attrs, *_ in sizes.values():
+        attrs.update(wall_s=wall, budget_s=budget)
+    return meta, sizes
+
+
 def read_h5(path):
     """An earlier conversion as (shared attrs, {N: (group attrs, R, E0, drift)}); a file written
     before the groups named their run takes the run's attributes from the file's."""
@@ -118,7 +151,7 @@ def merge(old, new, replace=False):
 
 
 def convert(raw, out, commit, extend=None, replace=False):
-    meta, sizes = read_raw(raw, commit)
+    meta, sizes = read_chain(raw.split(","), commit)
     if extend:
         top, old = read_h5(extend)
         for key in SHARED_KEYS:

@@ -36,11 +36,12 @@ def passage_time_hpp(x, dt, width, target):
     return math.nan
 
 
-def write_raw(folder, device, sizes, B, records, shift=0.0):
+def write_raw(folder, device, sizes, B, records, shift=0.0, resumed_from=""):
     """A device check's qss_gpu.json and qss_gpu.f64: R = N + (replica, record) / 100 + shift,
     the energy -N/2 (1 + 1e-6 record)."""
     meta = {"device": device, "h": 0.1, "U": 0.69, "K": 1, "replicas": B, "lives": 3,
-            "budget_s": 1, "wall_s": 1, "records": records, "seeds": "s", "sizes": sizes}
+            "budget_s": 1, "wall_s": 1, "records": records, "seeds": "s", "sizes": sizes,
+            "resumed_from": resumed_from}
     json.dump(meta, open(os.path.join(folder, "qss_gpu.json"), "w"))
     blob = []
     for s in sizes:
@@ -139,7 +140,33 @@ def main():
             # R_mean is stored in float32, whose spacing at 2000 is 2^-13 = 1.2e-4: within it of
             # the replacing run's 2000 + 1e-3, and 8 spacings from the stored run's 2000.
             assert abs(f["N2000/R_mean"][0, 0] - (2000 + 1e-3)) < 2.0**-13
-    print("qss_lifetime_gpu.py: m_eq, half_way, power_law, convert and --extend as ported")
+
+        # One run in two calls, the second resumed from the first: the second's records, the
+        # calls' wall times summed; a second call that did not resume, or whose records differ
+        # from the first's, is refused.
+        part = dict(sizes[1], steps_done=60, records_written=3)
+        whole = dict(sizes[1], steps_done=100, records_written=5)
+        calls = {}
+        for name, size, shift, resumed in (("first", part, 0.0, ""), ("second", whole, 0.0, "r.bin"),
+                                           ("fresh", whole, 0.0, ""), ("moved", whole, 1e-3, "r.bin")):
+            calls[name] = os.path.join(tmp, name)
+            os.mkdir(calls[name])
+            write_raw(calls[name], "card D", [size], B, records, shift, resumed)
+        chain = os.path.join(tmp, "chain.h5")
+        q.convert(calls["first"] + "," + calls["second"], chain, "mno")
+        with h5py.File(chain, "r") as f:
+            assert f["N2000/R_mean"].shape == (B, 5) and f["N2000"].attrs["wall_s"] == 2
+            assert f.attrs["wall_s"] == 2 and f["N2000"].attrs["budget_s"] == 2
+        for bad, why in (("fresh", "did not resume"), ("moved", "differ")):
+            try:
+                q.convert(calls["first"] + "," + calls[bad], os.path.join(tmp, "bad.h5"), "pqr")
+            except SystemExit as e:
+                assert why in str(e), e
+            else:
+                raise AssertionError(f"a second call ({bad}) was taken as the first's continuation")
+            assert not os.path.exists(os.path.join(tmp, "bad.h5"))
+    print("qss_lifetime_gpu.py: m_eq, half_way, power_law, convert, --extend and resumed calls "
+          "as ported")
 
 
 if __name__ == "__main__":
