@@ -6,11 +6,16 @@
 // Each rate is the fastest of 3 timed runs after a warm-up (host clock around a synchronised
 // advance). The bound of a sparse row: the step's time is at least the largest of
 //   gathers:  entries / (the measured random-gather rate of the row's record, 2 B sizeof(T)
-//             bytes, from a table of N records: the [cos, sin] table of all replicas),
+//             bytes, from a table of N records, the [cos, sin] table of all replicas, or of
+//             16 MB where that table is larger: the best case, every record from a table the
+//             L2 holds whole, so that no kernel runs above it),
 //   stream:   bytes the step must move once (columns 4 B per entry, 2 passes over the cells'
 //             state: theta, p, g and [cos, sin] read and written) / the copy bandwidth,
 //   sincos:   cells / the measured sincos rate,
-//   launches: 2 x the time of an empty kernel launched back to back,
+//   launches: 2 x the time of an empty kernel launched back to back;
+// its model (not a bound) takes the gather from the table at its own size, of which the L2 holds
+// a share that varies run to run (measured: 39.1 and 43.0 G 128-byte records/s from 128 MB on
+// two H200s, where the step ran at 41.0), and names the row's limit,
 // and of a complete-graph row: cells / (sincos rate x min(1, blocks / multiprocessors)) (a
 // replica's cluster of blocks uses one multiprocessor a block). The rank-one rows are the stepper
 // of `simulate --device cuda` on K_N (rank_one_ensemble.hpp: the CPU's bits), with each step's
@@ -46,7 +51,11 @@ struct Row {
   std::int64_t n = 0;
   int replicas = 1;
   double rate = 0.0, bound = 0.0, memory_mb = 0.0, step_us = 0.0;
+  double model = 0.0;  // sparse rows: the rate of the model, 0 where there is none
 };
+
+// Records of a table the L2 holds whole, with room to spare (60 MB on the H200, 50 on the H100).
+constexpr std::int64_t k_resident_table_bytes = std::int64_t{16} << 20;
 
 template <typename Advance>
 double best_seconds(Advance&& advance, int runs = 3) {
@@ -105,7 +114,9 @@ Row sparse_row(const Ceilings& c, std::int64_t n, int replicas, cuda::DevicePrec
                 1e6;
   const int value_bytes = precision == cuda::DevicePrecision::float64 ? 8 : 4;
   const int record = 2 * replicas * value_bytes;
-  const double t_gather = entries / cuda::gather_rate(n, record);
+  const std::int64_t resident = std::min(n, k_resident_table_bytes / record);
+  const double t_gather = entries / cuda::gather_rate(resident, record);
+  const double t_table = resident == n ? t_gather : entries / cuda::gather_rate(n, record);
   // theta, p, g (8 B each, read and written in the stage; g written by the force) and the
   // [cos, sin] written once and read by the row's own cell: ~ 10 doubles per cell and step.
   const double t_stream = (entries * 4.0 + static_cast<double>(cells) * 80.0 +
@@ -114,9 +125,11 @@ Row sparse_row(const Ceilings& c, std::int64_t n, int replicas, cuda::DevicePrec
   const double t_sincos = static_cast<double>(cells) / c.sincos;
   // Two launches a step (the stage, the force).
   const double t_launch = 2.0 * c.launch;
-  const double t = std::max({t_gather, t_stream, t_sincos, t_launch});
-  r.bound = entries * replicas / t;
-  r.limit = t == t_gather   ? "gather " + std::to_string(record) + " B"
+  r.bound = entries * replicas / std::max({t_gather, t_stream, t_sincos, t_launch});
+  const double t = std::max({t_table, t_stream, t_sincos, t_launch});
+  r.model = entries * replicas / t;
+  r.limit = t == t_table ? "gather " + std::to_string(record) + " B" +
+                               (resident == n ? "" : " (table past the L2)")
             : t == t_stream ? "stream"
             : t == t_sincos ? "sincos"
                             : "launches";
@@ -249,20 +262,29 @@ int main(int argc, char** argv) {
     rows.push_back(rank_one_row(c, 100000, 16, 2000 / scale));
     rows.push_back(rank_one_row(c, 20000, 64, 2000 / scale));
     rows.push_back(rank_one_row(c, 1000, 32, 2000 / scale));
-    std::printf("\n%-22s %-8s %9s %3s %12s %12s %6s %10s %9s  %s\n", "kind", "prec", "N", "B",
-                "rate (G/s)", "bound (G/s)", "frac", "step (us)", "mem (MB)", "limit");
+    std::printf("\n%-22s %-8s %9s %3s %12s %12s %6s %12s %6s %10s %9s  %s\n", "kind", "prec", "N",
+                "B", "rate (G/s)", "bound (G/s)", "frac", "model (G/s)", "/model", "step (us)",
+                "mem (MB)", "limit (the model's where it has one)");
     std::ofstream csv;
     if (!out.empty()) {
       csv.open(out);
-      csv << "kind,precision,N,replicas,rate,bound,fraction,step_us,memory_mb,limit\n";
+      csv << "kind,precision,N,replicas,rate,bound,fraction,model,model_fraction,step_us,"
+             "memory_mb,limit\n";
     }
     for (const Row& r : rows) {
-      std::printf("%-22s %-8s %9lld %3d %12.3f %12.3f %5.0f%% %10.2f %9.1f  %s\n", r.kind.c_str(),
-                  r.precision.c_str(), static_cast<long long>(r.n), r.replicas, r.rate / 1e9,
-                  r.bound / 1e9, 100.0 * r.rate / r.bound, r.step_us, r.memory_mb, r.limit.c_str());
+      char model[32] = "           -", of_model[16] = "     -";
+      if (r.model > 0.0) {
+        std::snprintf(model, sizeof model, "%12.3f", r.model / 1e9);
+        std::snprintf(of_model, sizeof of_model, "%5.0f%%", 100.0 * r.rate / r.model);
+      }
+      std::printf("%-22s %-8s %9lld %3d %12.3f %12.3f %5.0f%% %s %s %10.2f %9.1f  %s\n",
+                  r.kind.c_str(), r.precision.c_str(), static_cast<long long>(r.n), r.replicas,
+                  r.rate / 1e9, r.bound / 1e9, 100.0 * r.rate / r.bound, model, of_model, r.step_us,
+                  r.memory_mb, r.limit.c_str());
       if (csv) {
         csv << r.kind << ',' << r.precision << ',' << r.n << ',' << r.replicas << ',' << r.rate
-            << ',' << r.bound << ',' << r.rate / r.bound << ',' << r.step_us << ',' << r.memory_mb
+            << ',' << r.bound << ',' << r.rate / r.bound << ',' << r.model << ','
+            << (r.model > 0.0 ? r.rate / r.model : 0.0) << ',' << r.step_us << ',' << r.memory_mb
             << ',' << r.limit << '\n';
       }
     }

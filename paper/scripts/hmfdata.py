@@ -87,6 +87,13 @@ def _text(value):
     return value.decode() if isinstance(value, bytes) else str(value)
 
 
+def is_verification_output(path):
+    """Whether PATH was written by a verification driver's --output (a data folder can also hold
+    stored data that its own script draws, such as paper/full/beyond/data/qss_lifetime_gpu.h5)."""
+    with h5py.File(path, "r") as f:
+        return _text(f.attrs.get("hmfnet_format", "")) == "verification"
+
+
 def load(data_dir, driver):
     """Reads DATA_DIR/DRIVER.h5 as written by `verification_DRIVER --output`."""
     path = os.path.join(data_dir, f"{driver}.h5")

@@ -84,7 +84,11 @@ SECTIONS = [
     ("Beyond the paper: the quasi-stationary state's life on the complete graph",
      "Not a claim of the paper: Yamaguchi, Barre, Bouchet, Dauxois & Ruffo (Physica A 337, 2004) "
      "find that the homogeneous water-bag at U = 0.69 stays quasi-stationary for a time ~ N^1.7 "
-     "before relaxing to the synchronised equilibrium.", ["qss_lifetime"], ["qss_lifetime"]),
+     "before relaxing to the synchronised equilibrium (fitted over N = 10^3 .. 2 10^4); Rocha "
+     "Filho et al. (PRE 90, 2014) see the exponent rise toward 2 at large N. The second figure "
+     "and its tables: the same start on a GPU over that range, 32 replicas a size, redrawn from "
+     "the stored data of paper/full/beyond/data/qss_lifetime_gpu.h5 (docs/gpu.md).",
+     ["qss_lifetime"], ["qss_lifetime", "qss_lifetime_gpu"]),
     ("Beyond the paper: the near-onset gap, a lag or the stationary state?",
      "Our open question, not the paper's: near K_c the simulation sits below eq:rSigmaBesselMain "
      "at the paper's T. Gaussian momenta at 1.1, 1.2 and 1.5 K_c on the complete graph and on ER "
@@ -247,6 +251,8 @@ def main():
     args = parser.parse_args()
     results = {}
     for path in sorted(glob.glob(os.path.join(args.data, "*.h5"))):
+        if not hmfdata.is_verification_output(path):
+            continue
         r = hmfdata.load(args.data, os.path.basename(path)[:-3])
         results[r.driver] = r
     commits = sorted({r.attrs.get("git_commit", "?") for r in results.values()})

@@ -16,7 +16,7 @@ exponent with N shows in either.
 Several DIRs are the calls of one run, each going on from the one before (--resume): the last
 call's records hold the whole run; they are taken once every earlier call's records are checked
 equal to their start (bit for bit in float32), and the run's wall time is the calls' sum.
-  python3 qss_lifetime_gpu.py --data DIR --out FIGDIR            # HDF5 -> figure and table
+  python3 qss_lifetime_gpu.py --data DIR --out FIGDIR            # HDF5 -> figure and tables
 With --extend, the sizes of OLD.h5 are kept where the new run went no further; a size in both
 keeps the longer run, after its records over the common stretch are checked equal (bit for
 bit in the float32 the file stores)
@@ -26,7 +26,8 @@ With --replace, a size the new run holds replaces the stored one without that ch
 with another --lives: its records lie on another grid). Each size's group names the device,
 commit and wall time of the run it comes from.
 The second form reads DIR/qss_lifetime_gpu.h5 (and DIR/qss_lifetime.h5, the CPU's N = 200 ..
-1600, when present) and prints the table the report cites.
+1600, when present), prints the tables the report cites and writes them beside the figure
+(FIGDIR/qss_lifetime_gpu.md); `make paper-figures` runs it on paper/full/beyond/data.
 """
 import argparse
 import json
@@ -330,26 +331,38 @@ def analyse(path):
 
 
 def report(a):
-    print(f"device: {a['attrs']['device']}; commit {a['attrs']['git_commit']}; "
-          f"wall {a['attrs']['wall_s']:.0f} s; {a['attrs']['replicas']} replicas per N")
-    print("| N | U | M_eq | life (half-way) | se | resamples passed | T run / planned | max |dH/H| | run on |")
-    print("|---|---|---|---|---|---|---|---|---|")
+    """The tables the report cites, as Markdown lines."""
+    lines = [f"device: {a['attrs']['device']}; commit {a['attrs']['git_commit']}; "
+             f"wall {a['attrs']['wall_s']:.0f} s; {a['attrs']['replicas']} replicas per N", "",
+             "| N | U | M_eq | life (half-way) | se | resamples passed | T run / planned | max |dH/H| | run on |",
+             "|---|---|---|---|---|---|---|---|---|"]
     for r in a["rows"]:
         life = f"{r['life']:.4g}" if np.isfinite(r["life"]) else f"> {r['T']:.4g} (censored)"
         se = f"{r['se']:.3g}" if np.isfinite(r["se"]) else "-"
-        print(f"| {r['N']} | {r['U']:.4f} | {r['M_eq']:.4f} | {life} | {se} | {r['passed']} of "
-              f"{BOOTSTRAP} | {r['T']:.4g} / {r['planned']:.4g} | {r['energy_error']:.1e} | "
-              f"{r['device']} |")
-    print(f"\nhalf-way lives: N^({a['slope']:.3f} +- {a['slope_se']:.3f}) over the measured N; "
-          f"collapse of phi_N(t / N^alpha) over the same N: alpha = {a['alpha']:.3f} +- {a['alpha_se']:.3f}")
-    print("| N1 -> N2 | local exponent (half-way) | local collapse alpha |")
-    print("|---|---|---|")
+        lines.append(f"| {r['N']} | {r['U']:.4f} | {r['M_eq']:.4f} | {life} | {se} | {r['passed']} "
+                     f"of {BOOTSTRAP} | {r['T']:.4g} / {r['planned']:.4g} | "
+                     f"{r['energy_error']:.1e} | {r['device']} |")
+    lines += ["", f"half-way lives: N^({a['slope']:.3f} +- {a['slope_se']:.3f}) over the measured N; "
+              f"collapse of phi_N(t / N^alpha) over the same N: alpha = {a['alpha']:.3f} +- "
+              f"{a['alpha_se']:.3f}", "",
+              "| N1 -> N2 | local exponent (half-way) | local collapse alpha |", "|---|---|---|"]
     for l in a["local"]:
-        print(f"| {l['N1']} -> {l['N2']} | {l['exponent']:.3f} +- {l['se']:.3f} | "
-              f"{l['alpha']:.3f} +- {l['alpha_se']:.3f} |")
+        lines.append(f"| {l['N1']} -> {l['N2']} | {l['exponent']:.3f} +- {l['se']:.3f} | "
+                     f"{l['alpha']:.3f} +- {l['alpha_se']:.3f} |")
     for c in a["censored"]:
-        print(f"| {c['N1']} -> {c['N2']} | > {c['exponent']:.3f} +- {c['se']:.3f} (life at "
-              f"{c['N2']} > T = {c['T']:.4g}) | - |")
+        lines.append(f"| {c['N1']} -> {c['N2']} | > {c['exponent']:.3f} +- {c['se']:.3f} (life at "
+                     f"{c['N2']} > T = {c['T']:.4g}) | - |")
+    return lines
+
+
+def write_tables(lines, out_dir):
+    """FIGDIR/qss_lifetime_gpu.md, which make_report.py puts under the figure (temporary file,
+    then rename)."""
+    os.makedirs(out_dir, exist_ok=True)
+    path = os.path.join(out_dir, "qss_lifetime_gpu.md")
+    with open(path + ".tmp", "w") as f:
+        f.write("\n".join(lines) + "\n")
+    os.replace(path + ".tmp", path)
 
 
 def figure(a, data_dir, out_dir):
@@ -426,7 +439,9 @@ def main():
     if not (args.data and args.out):
         p.error("give --raw DIR --h5 F, or --data DIR --out FIGDIR")
     a = analyse(os.path.join(args.data, "qss_lifetime_gpu.h5"))
-    report(a)
+    lines = report(a)
+    print("\n".join(lines))
+    write_tables(lines, args.out)
     figure(a, args.data, args.out)
 
 

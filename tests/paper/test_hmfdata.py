@@ -83,8 +83,17 @@ def main():
                      "no column names")
         expect_error(KeyError, lambda: result.table("absent"), "tiny", "absent")
         check_summary(directory, hmfdata)
+        # Stored data of another kind beside the drivers' (qss_lifetime_gpu.h5): not loaded as
+        # a driver's output, and load refuses it by name.
+        stored = os.path.join(directory, "stored.h5")
+        with h5py.File(stored, "w") as f:
+            f.attrs["replicas"] = 32
+        assert hmfdata.is_verification_output(path)
+        assert not hmfdata.is_verification_output(stored)
+        expect_error(ValueError, lambda: hmfdata.load(directory, "stored"), stored,
+                     "not a verification output")
     print("hmfdata: columns by name, and errors naming file, dataset and column; the report's "
-          "summary on files with and without the cost attributes: ok")
+          "summary on files with and without the cost attributes; stored data told apart: ok")
     return 0
 
 
