@@ -8,7 +8,7 @@
 //   gathers:  entries / (the measured random-gather rate of the row's record, 2 B sizeof(T)
 //             bytes, from a table of N records, the [cos, sin] table of all replicas, or of
 //             16 MB where that table is larger: the best case, every record from a table the
-//             L2 holds whole, so that no kernel runs above it),
+//             L2 (50-60 MB) holds whole, so that no kernel runs above it),
 //   stream:   bytes the step must move once (columns 4 B per entry, 2 passes over the cells'
 //             state: theta, p, g and [cos, sin] read and written) / the copy bandwidth,
 //   sincos:   cells / the measured sincos rate,
@@ -129,7 +129,7 @@ Row sparse_row(const Ceilings& c, std::int64_t n, int replicas, cuda::DevicePrec
   const double t = std::max({t_table, t_stream, t_sincos, t_launch});
   r.model = entries * replicas / t;
   r.limit = t == t_table ? "gather " + std::to_string(record) + " B" +
-                               (resident == n ? "" : " (table past the L2)")
+                               (resident == n ? "" : " (table over 16 MB)")
             : t == t_stream ? "stream"
             : t == t_sincos ? "sincos"
                             : "launches";

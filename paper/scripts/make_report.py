@@ -14,6 +14,7 @@ import argparse
 import glob
 import math
 import os
+import sys
 import datetime
 
 import hmfdata
@@ -252,6 +253,8 @@ def main():
     results = {}
     for path in sorted(glob.glob(os.path.join(args.data, "*.h5"))):
         if not hmfdata.is_verification_output(path):
+            print(f"make_report: {path}: not a driver's output, left to its own script",
+                  file=sys.stderr)
             continue
         r = hmfdata.load(args.data, os.path.basename(path)[:-3])
         results[r.driver] = r
@@ -263,7 +266,8 @@ def main():
              "the paper's scale), code commit(s) " + ", ".join(f"`{c}`" for c in commits) +
              f", generated {datetime.date.today().isoformat()}.", "",
              "Every number below comes from a verification driver (`ctest -L verification` runs the "
-             "same drivers and judges the same checks); the tolerance and its source are written "
+             "same drivers and judges the same checks), except the GPU campaign's tables in the "
+             "QSS section, drawn from its stored data; the tolerance and its source are written "
              "next to each verdict. Paper: Virkar, Restrepo & Meiss, *The Hamiltonian Mean Field "
              "model: effect of network structure on synchronization dynamics*.", "",
              "## Summary", ""] + summary(results)

@@ -13,13 +13,14 @@ exponent with N shows in either.
 
   python3 qss_lifetime_gpu.py --raw DIR[,DIR2...] --h5 F.h5 [--commit C] [--extend OLD.h5 [--replace]]
                                                                  # device output -> HDF5
-Several DIRs are the calls of one run, each going on from the one before (--resume): the last
-call's records hold the whole run; they are taken once every earlier call's records are checked
-equal to their start (bit for bit in float32), and the run's wall time is the calls' sum.
+Several DIRs are the calls of one run, each going on from the one before (--resume): a later
+call's records of a size hold its whole run and are taken once the earlier call's are checked
+equal to their start (bit for bit in float32); a size a call did not step stays as the earlier
+call left it; the run's wall time is the calls' sum, its device the calls' cards.
   python3 qss_lifetime_gpu.py --data DIR --out FIGDIR            # HDF5 -> figure and tables
-With --extend, the sizes of OLD.h5 are kept where the new run went no further; a size in both
-keeps the longer run, after its records over the common stretch are checked equal (bit for
-bit in the float32 the file stores)
+With --extend, the sizes of OLD.h5 are kept where the new run went less far; a size in both
+keeps the longer run (the new one where they are equal), after its records over the common
+stretch are checked equal (bit for bit in the float32 the file stores)
 (the same seeds and the fixed-order sums of complete_graph_ensembles.cu give the same bits on
 every card and cluster size: a run that differs is not the same experiment and is refused).
 With --replace, a size the new run holds replaces the stored one without that check (a run
@@ -87,10 +88,15 @@ def read_raw(raw, commit):
 
 
 def read_chain(raws, commit):
-    """read_raw of the calls of one run, each resumed from the one before: the last call's
-    sizes, checked against every earlier call's records, with the calls' wall and budget summed."""
+    """read_raw of the calls of one run, each resumed from the one before: every size at its
+    latest call (a later call holds the whole run of a size it stepped: its records are checked
+    against the earlier call's; a size a call did not step stays as an earlier call left it, as
+    qss_gpu_resume.bin carries it), with the calls' wall and budget summed and their cards named."""
+    raws = [r for r in raws if r]
+    if not raws:
+        raise SystemExit("--raw names no folder")
     meta, sizes = read_raw(raws[0], commit)
-    wall, budget = meta["wall_s"], meta["budget_s"]
+    wall, budget, devices = meta["wall_s"], meta["budget_s"], [meta["device"]]
     for before, raw in zip(raws, raws[1:]):
         later, later_sizes = read_raw(raw, commit)
         if not later.get("resumed_from"):
@@ -98,21 +104,21 @@ def read_chain(raws, commit):
         for key in SHARED_KEYS + ("lives", "records"):
             if later[key] != meta[key]:
                 raise SystemExit(f"{before} has {key} = {meta[key]}, {raw} {later[key]}: not one run")
-        if set(later_sizes) != set(sizes):
-            raise SystemExit(f"{before} and {raw} hold other sizes: not one run")
-        for n, (attrs, R, E0, drift) in sizes.items():
+        for n in set(sizes) & set(later_sizes):
+            attrs, R, E0, drift = sizes[n]
             a2, R2, E02, drift2 = later_sizes[n]
             w = R.shape[1]
             if a2["record_every"] != attrs["record_every"] or R2.shape[1] < w or \
-                    not (np.array_equal(R2[:, :w], R) and np.array_equal(E02, E0)
-                         and np.array_equal(drift2[:, :w], drift)):
+                    not (np.array_equal(R2[:, :w], R) and np.array_equal(drift2[:, :w], drift)
+                         and (w == 0 or np.array_equal(E02, E0))):
                 raise SystemExit(f"N = {n}: {raw}'s first {w} records differ from {before}'s: "
                                  "not the run it resumed")
         wall, budget = wall + later["wall_s"], budget + later["budget_s"]
-        meta, sizes = later, later_sizes
-    meta.update(wall_s=wall, budget_s=budget)
+        devices += [later["device"]] if later["device"] not in devices else []
+        meta, sizes = later, {**sizes, **later_sizes}
+    meta.update(wall_s=wall, budget_s=budget, device=" + ".join(devices))
     for attrs, *_ in sizes.values():
-        attrs.update(wall_s=wall, budget_s=budget)
+        attrs.update(wall_s=wall, budget_s=budget, device=meta["device"])
     return meta, sizes
 
 
@@ -134,8 +140,8 @@ def read_h5(path):
 
 
 def merge(old, new, replace=False):
-    """The sizes of both; a size in both keeps the run with more steps, once the records the two
-    share are equal bit for bit (replace: the new run's, unchecked)."""
+    """The sizes of both; a size in both keeps the new run unless the stored one has more steps,
+    once the records the two share are equal bit for bit (replace: the new run's, unchecked)."""
     merged = dict(old)
     for n, run in new.items():
         if n in old and not replace:
@@ -145,7 +151,9 @@ def merge(old, new, replace=False):
                     not np.array_equal(a[:, :m], b[:, :m]):
                 raise SystemExit(f"N = {n}: the new run's first {m} records differ from the "
                                  "stored run's; not the same experiment, not merged")
-            if run[0]["steps_done"] <= old[n][0]["steps_done"]:
+            # An equal run replaces the stored one: the calls of one run (read_chain), given
+            # again with the first call stored, then carry one wall time, counted once.
+            if run[0]["steps_done"] < old[n][0]["steps_done"]:
                 continue
         merged[n] = run
     return merged
@@ -211,7 +219,7 @@ class Size:
         self.T = float(g.attrs["steps_done"]) * h
         self.planned = float(g.attrs["steps_planned"]) * h
         # The smoothing window in whole records: 50 time units where a record is shorter (N <
-        # 5000 here); beyond, one record, itself a mean over dt > 50 (up to 660 at 2 10^4).
+        # 5000 here); beyond, one record, itself a mean over dt > 50 (up to 1101 at 2 10^4).
         self.width = max(1, int(round(SMOOTH / self.dt)))
         U = E0 / self.N + 0.5  # K = 1; the centre-of-mass term (P/N)^2/2 ~ 1e-4 left in
         self.U = U.mean()
@@ -334,7 +342,7 @@ def report(a):
     """The tables the report cites, as Markdown lines."""
     lines = [f"device: {a['attrs']['device']}; commit {a['attrs']['git_commit']}; "
              f"wall {a['attrs']['wall_s']:.0f} s; {a['attrs']['replicas']} replicas per N", "",
-             "| N | U | M_eq | life (half-way) | se | resamples passed | T run / planned | max |dH/H| | run on |",
+             "| N | U | M_eq | life (half-way) | se | resamples passed | T run / planned | max abs(dH/H) | run on |",
              "|---|---|---|---|---|---|---|---|---|"]
     for r in a["rows"]:
         life = f"{r['life']:.4g}" if np.isfinite(r["life"]) else f"> {r['T']:.4g} (censored)"

@@ -8,7 +8,10 @@
   - the conversion of the device check's output: datasets, attributes, the records kept, and a
     refusal when the binary does not match its JSON;
   - --extend: a longer run of a size replaces the stored one, the other sizes and their run's
-    device stay, and a run whose shared records differ is refused with no file left.
+    device stay, and a run whose shared records differ is refused with no file left;
+  - the calls of one resumed run (--raw A,B): the later call's records once checked against the
+    earlier's, sizes a call did not step kept, the wall times summed once (also with the first
+    call already stored), refused where the second call did not resume or its records differ.
 Usage: test_qss_lifetime_gpu.py PAPER_DIR
 """
 import json
@@ -117,10 +120,16 @@ def main():
             assert f["N2000"].attrs["git_commit"] == "def"
             assert f["N1000"].attrs["device"] == "card A" and f["N1000"].attrs["git_commit"] == "abc"
             assert f.attrs["device"] == "card A; card B"
-        # A shorter run of a size keeps the stored one.
+        # A shorter run of a size keeps the stored one; an equally long one replaces it.
+        shorter = os.path.join(tmp, "shorter")
+        os.mkdir(shorter)
+        write_raw(shorter, "card B", [dict(sizes[1], steps_done=80, records_written=4)], B, records)
+        q.convert(shorter, os.path.join(tmp, "again.h5"), "ghi", extend=merged)
+        with h5py.File(os.path.join(tmp, "again.h5"), "r") as f:
+            assert f["N2000"].attrs["git_commit"] == "def" and f["N2000/R_mean"].shape == (B, 5)
         q.convert(longer, os.path.join(tmp, "again.h5"), "ghi", extend=merged)
         with h5py.File(os.path.join(tmp, "again.h5"), "r") as f:
-            assert f["N2000"].attrs["git_commit"] == "def"
+            assert f["N2000"].attrs["git_commit"] == "ghi"
         # The same size started elsewhere: not the same experiment.
         other = os.path.join(tmp, "other")
         os.mkdir(other)
@@ -157,6 +166,25 @@ def main():
         with h5py.File(chain, "r") as f:
             assert f["N2000/R_mean"].shape == (B, 5) and f["N2000"].attrs["wall_s"] == 2
             assert f.attrs["wall_s"] == 2 and f["N2000"].attrs["budget_s"] == 2
+        # The first call already stored, the chain given again: its wall counted once.
+        first_h5 = os.path.join(tmp, "first.h5")
+        q.convert(calls["first"], first_h5, "mno")
+        q.convert(calls["first"] + "," + calls["second"], os.path.join(tmp, "again2.h5"), "mno",
+                  extend=first_h5)
+        with h5py.File(os.path.join(tmp, "again2.h5"), "r") as f:
+            assert f.attrs["wall_s"] == 2 and f["N2000"].attrs["wall_s"] == 2
+        # A second call that stepped one size of two, on another card: the other size stays as
+        # the first call left it; the run names both cards.
+        two, one = os.path.join(tmp, "two"), os.path.join(tmp, "one")
+        os.mkdir(two)
+        os.mkdir(one)
+        write_raw(two, "card D", [dict(sizes[0], steps_done=30, records_written=3), part], B,
+                  records)
+        write_raw(one, "card E", [whole], B, records, resumed_from="r.bin")
+        q.convert(two + "," + one, os.path.join(tmp, "subset.h5"), "stu")
+        with h5py.File(os.path.join(tmp, "subset.h5"), "r") as f:
+            assert f["N1000/R_mean"].shape == (B, 3) and f["N2000/R_mean"].shape == (B, 5)
+            assert f["N1000"].attrs["device"] == "card D + card E" and f["N1000"].attrs["wall_s"] == 2
         for bad, why in (("fresh", "did not resume"), ("moved", "differ")):
             try:
                 q.convert(calls["first"] + "," + calls[bad], os.path.join(tmp, "bad.h5"), "pqr")
