@@ -7,9 +7,18 @@
 # as the CLI reports it: stored entries x replicas for ER, rows x replicas for K_N; G/s), the
 # rule's work per step (gathers + k_row_work per row, x replicas), the threads the default chose,
 # and default / best.
-# Run on an idle machine. Usage: bench/thread_rule.sh [BUILD_DIR (default build)]
+# Run on an idle machine (all rows: ~25 min). Usage: bench/thread_rule.sh [BUILD_DIR (default
+# build)] [NETWORKS: all (default), er or complete: only the ER or only the complete-graph rows]
 set -euo pipefail
 build=${1:-build}
+networks=${2:-all}
+case $networks in
+  all | er | complete) ;;
+  *)
+    echo "bench/thread_rule.sh: NETWORKS is all, er or complete, not '$networks'" >&2
+    exit 2
+    ;;
+esac
 hmfnet="$build/bin/hmfnet"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -48,8 +57,10 @@ printf "%-24s %-8s %10s %9s %9s %9s %8s %13s\n" network policy "rule work" "1 th
   "2 threads" default "chosen" "default/best"
 # N, mean degree, T: about 2e9 stored entries x steps per run (less for the two smallest,
 # whose rate is set by the per-step costs, not the entries).
-for spec in "100 5 4000" "300 10 4000" "1000 10 2000" "10000 10 200" "10000 100 20" \
-  "100000 20 10" "100000 100 2"; do
+er_specs=("100 5 4000" "300 10 4000" "1000 10 2000" "1000 100 200" "10000 10 200"
+  "10000 100 20" "100000 20 10" "100000 100 2")
+[[ $networks == complete ]] && er_specs=()
+for spec in "${er_specs[@]}"; do
   read -r n d T <<<"$spec"
   net="$tmp/er_${n}_${d}.h5"
   "$hmfnet" generate er --n "$n" --mean-degree "$d" --seed 1 -o "$net" 2>"$tmp/stderr" ||
@@ -57,9 +68,12 @@ for spec in "100 5 4000" "300 10 4000" "1000 10 2000" "10000 10 200" "10000 100 
   row "ER N=$n d=$d" "$net" "$T"
 done
 # The complete graph (O(N) rank-one force): N, replicas, T; about 2e8 rows x replicas x steps
-# (the QSS drivers' scenes: N = 200 .. 1600 with 16 replicas).
-for spec in "100 1 20000" "200 16 600" "1600 16 80" "1000 1 2000" "20000 1 100" \
-  "100000 1 20"; do
+# (the QSS drivers' scenes: N = 200 .. 1600 with 16 replicas; N = 10^4 with one replica, just
+# below the rule's second thread at N = 16,700).
+complete_specs=("100 1 20000" "200 16 600" "1600 16 80" "1000 1 2000" "10000 1 200"
+  "20000 1 100" "100000 1 20")
+[[ $networks == er ]] && complete_specs=()
+for spec in "${complete_specs[@]}"; do
   read -r n b T <<<"$spec"
   net="$tmp/complete_${n}.h5"
   [[ -f $net ]] || "$hmfnet" generate complete --n "$n" -o "$net" 2>"$tmp/stderr" ||

@@ -245,10 +245,13 @@ check_simulate() {
   esac
 }
 
+# Whether the word $1 is one of the space-separated words $2.
+one_of() { [[ " $2 " == *" $1 "* ]]; }
+
 all_checks="check_gpu_label check_simulate check_bench check_qss_resume check_qss"
 read -r -a checks <<<"${HMFNET_DEVICE_CHECKS:-$all_checks}"
 for c in "${checks[@]}"; do
-  [[ " $all_checks " == *" $c "* ]] || { echo "device_check: unknown check '$c' in HMFNET_DEVICE_CHECKS (known: $all_checks)" >&2; exit 2; }
+  one_of "$c" "$all_checks" || { echo "device_check: unknown check '$c' in HMFNET_DEVICE_CHECKS (known: $all_checks)" >&2; exit 2; }
 done
 
 echo "== device"
@@ -265,7 +268,7 @@ else
   echo "== build failed: see $OUT/build.log"
   tail -n 30 "$OUT/build.log" 2>/dev/null || true
   # The checks asked for, with what was prepared on the CPU machine, where it was built.
-  wanted() { [[ " ${checks[*]} " == *" $1 "* ]]; }
+  wanted() { one_of "$1" "${checks[*]}"; }
   ! wanted check_gpu_label || check_prebuilt_gpu_tests
   ! wanted check_simulate || check_simulate || record check_simulate fail - "exit $?"
   bin_dir="$prepared/bin"

@@ -87,6 +87,17 @@ def read_raw(raw, commit):
     return meta, sizes
 
 
+def records_agree(a, b, m):
+    """Whether two runs of a size, (group attrs, R, E0, drift) each, are one experiment over their
+    first m records: the same record spacing, and R, the energy drift and the first energy equal
+    bit for bit."""
+    (attrs_a, R_a, E0_a, drift_a), (attrs_b, R_b, E0_b, drift_b) = a, b
+    return (attrs_a["record_every"] == attrs_b["record_every"]
+            and np.array_equal(R_a[:, :m], R_b[:, :m])
+            and np.array_equal(drift_a[:, :m], drift_b[:, :m])
+            and (m == 0 or np.array_equal(E0_a, E0_b)))
+
+
 def read_chain(raws, commit):
     """read_raw of the calls of one run, each resumed from the one before: every size at its
     latest call (a later call holds the whole run of a size it stepped: its records are checked
@@ -105,12 +116,8 @@ def read_chain(raws, commit):
             if later[key] != meta[key]:
                 raise SystemExit(f"{before} has {key} = {meta[key]}, {raw} {later[key]}: not one run")
         for n in set(sizes) & set(later_sizes):
-            attrs, R, E0, drift = sizes[n]
-            a2, R2, E02, drift2 = later_sizes[n]
-            w = R.shape[1]
-            if a2["record_every"] != attrs["record_every"] or R2.shape[1] < w or \
-                    not (np.array_equal(R2[:, :w], R) and np.array_equal(drift2[:, :w], drift)
-                         and (w == 0 or np.array_equal(E02, E0))):
+            w = sizes[n][1].shape[1]
+            if later_sizes[n][1].shape[1] < w or not records_agree(sizes[n], later_sizes[n], w):
                 raise SystemExit(f"N = {n}: {raw}'s first {w} records differ from {before}'s: "
                                  "not the run it resumed")
         wall, budget = wall + later["wall_s"], budget + later["budget_s"]
@@ -141,14 +148,12 @@ def read_h5(path):
 
 def merge(old, new, replace=False):
     """The sizes of both; a size in both keeps the new run unless the stored one has more steps,
-    once the records the two share are equal bit for bit (replace: the new run's, unchecked)."""
+    once the records the two share agree (records_agree; replace: the new run's, unchecked)."""
     merged = dict(old)
     for n, run in new.items():
         if n in old and not replace:
-            a, b = old[n][1], run[1]
-            m = min(a.shape[1], b.shape[1])
-            if old[n][0]["record_every"] != run[0]["record_every"] or \
-                    not np.array_equal(a[:, :m], b[:, :m]):
+            m = min(old[n][1].shape[1], run[1].shape[1])
+            if not records_agree(old[n], run, m):
                 raise SystemExit(f"N = {n}: the new run's first {m} records differ from the "
                                  "stored run's; not the same experiment, not merged")
             # An equal run replaces the stored one: the calls of one run (read_chain), given

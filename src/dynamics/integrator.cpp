@@ -10,9 +10,21 @@
 
 namespace hmfnet {
 
+// One replica: the cells in one flat loop, which the compiler vectorises (with a replica loop of
+// one trip inside the row loop it did not: kick and kick_drift took 36% of a leap-frog step of
+// the complete graph, N = 2 10^4, bench RankOneStep). c K[0] is formed first, as c * K[b] * g
+// forms it, so the bits are those of the general loop.
 void kick(RotorState& state, double c, const std::vector<double>& K, const std::vector<double>& g) {
   const auto w = static_cast<std::size_t>(state.replicas);
   const auto rows = static_cast<std::size_t>(state.rows);
+  if (w == 1) {
+    const double cK = c * K[0];
+    double* p = state.p.data();
+    const double* gk = g.data();
+#pragma omp for schedule(static)
+    for (std::size_t k = 0; k < rows; ++k) p[k] += cK * gk[k];
+    return;
+  }
 #pragma omp for schedule(static)
   for (std::size_t r = 0; r < rows; ++r)
     for (std::size_t b = 0; b < w; ++b) state.p[r * w + b] += c * K[b] * g[r * w + b];
@@ -22,6 +34,18 @@ void kick_drift(RotorState& state, double c_kick, const std::vector<double>& K,
                 const std::vector<double>& g, double c_drift) {
   const auto w = static_cast<std::size_t>(state.replicas);
   const auto rows = static_cast<std::size_t>(state.rows);
+  if (w == 1) {  // as in kick
+    const double cK = c_kick * K[0];
+    double* p = state.p.data();
+    double* theta = state.theta.data();
+    const double* gk = g.data();
+#pragma omp for schedule(static)
+    for (std::size_t k = 0; k < rows; ++k) {
+      p[k] += cK * gk[k];
+      theta[k] += c_drift * p[k];
+    }
+    return;
+  }
 #pragma omp for schedule(static)
   for (std::size_t r = 0; r < rows; ++r) {
     for (std::size_t b = 0; b < w; ++b) {

@@ -6,6 +6,7 @@
 
 #include "dynamics/integrator.hpp"
 #include "dynamics/network_force.hpp"
+#include "dynamics/thread_choice.hpp"
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
 #include "parallel/parallel_session.hpp"
@@ -121,4 +122,46 @@ TEST_CASE("Force and state are bit-identical with 1 and 2 OpenMP threads", "[int
   omp_set_num_threads(saved);
   REQUIRE(finals[0].theta == finals[1].theta);
   REQUIRE(finals[0].p == finals[1].p);
+}
+
+TEST_CASE("Kick and kick-drift of one replica take the general loop's operations, bit for bit",
+          "[integrator]") {
+  // One replica runs a flat loop of its own; these are the operations of the loop over rows and
+  // replicas written out: p += (c K) g, then theta += c_drift p. Values of mixed magnitude, so
+  // that c (K g) or a contraction into one fused multiply-add would change bits.
+  const NodeIndex rows = 1000;
+  RotorState state;
+  state.rows = rows;
+  state.theta.resize(rows);
+  state.p.resize(rows);
+  std::vector<double> g(rows);
+  for (NodeIndex r = 0; r < rows; ++r) {
+    const auto k = static_cast<std::size_t>(r);
+    state.theta[k] = 0.1 + 1e-3 * static_cast<double>(r % 97);
+    state.p[k] = 6.0 + std::sin(static_cast<double>(r));
+    g[k] = std::cos(0.7 * static_cast<double>(r)) * std::pow(10.0, static_cast<double>(r % 9) - 4);
+  }
+  const std::vector<double> K{1.3 / 3.0};
+  const double c_kick = 0.05 / 3.0, c_drift = 0.1 / 7.0;
+  RotorState expected = state;
+  for (std::size_t k = 0; k < g.size(); ++k) {
+    const double cK = c_kick * K[0];
+    expected.p[k] = expected.p[k] + cK * g[k];
+    expected.theta[k] = expected.theta[k] + c_drift * expected.p[k];
+  }
+  for (const int threads : {1, 2}) {
+    const ThreadCountScope scope(threads);
+    RotorState s = state;
+#pragma omp parallel
+    kick_drift(s, c_kick, K, g, c_drift);
+    CHECK(s.p == expected.p);
+    CHECK(s.theta == expected.theta);
+    RotorState kicked = state;
+#pragma omp parallel
+    kick(kicked, c_kick, K, g);
+    std::vector<double> p_expected = state.p;
+    for (std::size_t k = 0; k < g.size(); ++k) p_expected[k] += c_kick * K[0] * g[k];
+    CHECK(kicked.p == p_expected);
+    CHECK(kicked.theta == state.theta);
+  }
 }

@@ -88,38 +88,68 @@ TEST_CASE("An error on the master thread leaves the team as an exception after t
   REQUIRE_THROWS_WITH(on_master([] { throw std::runtime_error("serial"); }), "serial");
 }
 
-TEST_CASE("Ordered sums in a team of 2 equal the serial sums bit for bit", "[team]") {
-  // 5000 rows x 3 columns: three blocks of 2048 rows, shared out over two threads.
-  const std::size_t rows = 5000;
-  std::vector<double> values(rows * 3);
-  for (std::size_t k = 0; k < values.size(); ++k) values[k] = 1.0 / (1.0 + static_cast<double>(k));
-  std::vector<double> serial(3, 0.0);
-  {
-    const ThreadCountScope one(1);
-    ordered_column_sums(values, rows, 3, serial);
-  }
-  const ThreadCountScope two(2);
-  OrderedColumnSums sums;
-  sums.prepare(rows, 3);
-  std::vector<double> team(3, -1.0);
-  int team_size = 0;
-  in_team([&] {
-    sums.sum(values.data(), team.data());
-#pragma omp master
-    team_size = omp_get_num_threads();
-  });
-  CHECK(team_size == 2);  // the region really ran two threads
-  CHECK(team == serial);
-  // Both are the documented order, written out here: blocks of 2048 rows, each summed from 0 in
-  // row order, the block sums added in block order.
-  for (std::size_t b = 0; b < 3; ++b) {
+namespace {
+
+// The documented order written out: blocks of 2048 rows, each summed from 0 in row order, the
+// block sums added in block order.
+std::vector<double> documented_sums(const std::vector<double>& values, std::size_t rows,
+                                    std::size_t width) {
+  std::vector<double> out(width, 0.0);
+  for (std::size_t b = 0; b < width; ++b) {
     double total = 0.0;
     for (std::size_t first = 0; first < rows; first += 2048) {
       double block = 0.0;
-      for (std::size_t r = first; r < std::min(rows, first + 2048); ++r) block += values[r * 3 + b];
+      for (std::size_t r = first; r < std::min(rows, first + 2048); ++r)
+        block += values[r * width + b];
       total += block;
     }
-    CHECK(team[b] == total);
+    out[b] = total;
+  }
+  return out;
+}
+
+// Values of mixed sign and magnitude (1 to 10^12), so that another order of the additions
+// changes the bits.
+std::vector<double> mixed_values(std::size_t count) {
+  std::vector<double> v(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    const double sign = k % 3 == 0 ? -1.0 : 1.0;
+    v[k] = sign * (1.0 / (1.0 + static_cast<double>(k)) + static_cast<double>(k % 7) * 1e11 +
+                   static_cast<double>(k % 13) * 0.1);
+  }
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("Ordered sums in a team of 1, 2 or 3 equal the documented order bit for bit",
+          "[team]") {
+  // Widths with a grouped kernel (1, 2, 4, 8, 16 columns: several blocks summed side by side)
+  // and without (3, 70: past the 64 columns summed at once); row counts with one short block,
+  // exactly full blocks, and more blocks than a group (20 000 rows: 10 blocks).
+  for (const std::size_t width : std::initializer_list<std::size_t>{1, 2, 3, 4, 8, 16, 70}) {
+    for (const std::size_t rows : std::initializer_list<std::size_t>{1, 2047, 2048, 4097, 5000, 20000}) {
+      const std::vector<double> values = mixed_values(rows * width);
+      const std::vector<double> expected = documented_sums(values, rows, width);
+      for (const int threads : {1, 2, 3}) {
+        INFO("width " << width << ", rows " << rows << ", threads " << threads);
+        const ThreadCountScope scope(threads);
+        std::vector<double> free_call;
+        ordered_column_sums(values, rows, static_cast<int>(width), free_call);
+        CHECK(free_call == expected);
+        OrderedColumnSums sums;
+        sums.prepare(rows, static_cast<int>(width));
+        std::vector<double> team(width, -1.0);
+        int team_size = 0;
+        in_team([&] {
+          sums.sum(values.data(), team.data());
+#pragma omp master
+          team_size = omp_get_num_threads();
+        });
+        CHECK(team_size == threads);  // the region really ran that many threads
+        CHECK(team == expected);
+      }
+    }
   }
 }
 
