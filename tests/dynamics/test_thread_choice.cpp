@@ -33,6 +33,11 @@ TEST_CASE("The default thread count follows the work per step and the wait polic
   CHECK(default_threads(step_work(500, 100, 1), 2, spinning) == 1);
   CHECK(default_threads(step_work(3'000, 300, 1), 2, spinning) == 1);
   CHECK(default_threads(step_work(10'000, 1'000, 1), 2, spinning) == 1);
+  // ER N = 2000, d = 10 and N = 1500, d = 30 (0.6-0.8x, 0.9x): one; N = 1000, d = 100 (1.47x),
+  // which the rule in units of a 40-gather row gave one (0.68x of the best): two.
+  CHECK(default_threads(step_work(20'000, 2'000, 1), 2, spinning) == 1);
+  CHECK(default_threads(step_work(45'000, 1'500, 1), 2, spinning) == 1);
+  CHECK(default_threads(step_work(100'000, 1'000, 1), 2, spinning) == 2);
   // ER N = 10^4, d = 10: two when spinning (1.9x), one when passive (0.7x).
   CHECK(default_threads(step_work(100'000, 10'000, 1), 2, spinning) == 2);
   CHECK(default_threads(step_work(100'000, 10'000, 1), 2, passive) == 1);
@@ -41,7 +46,7 @@ TEST_CASE("The default thread count follows the work per step and the wait polic
   // ER N = 10^5, d = 20: two under either policy (1.6x when passive).
   CHECK(default_threads(step_work(2'000'000, 100'000, 1), 2, passive) == 2);
   // The complete graph (no gathers; rows at k_rank_one_row_work): N = 200 and 400 with 16
-  // replicas, one (0.9x; 0.78x at N = 400, which k_row_work gave two); N = 1600 with 16 and
+  // replicas, one (0.9x; 0.78-0.85x at N = 400, which k_row_work gave two); N = 1600 with 16 and
   // N = 2 10^4 with one, two when spinning (1.4x, 1.9x) and one when passive (0.6x, 0.65x);
   // N = 10^5, two under either policy (1.4x when passive).
   const auto rank_one = [](std::int64_t n, std::int64_t replicas) {
@@ -52,6 +57,13 @@ TEST_CASE("The default thread count follows the work per step and the wait polic
   CHECK(default_threads(rank_one(1'600, 16), 2, spinning) == 2);
   CHECK(default_threads(rank_one(1'600, 16), 2, passive) == 1);
   CHECK(default_threads(rank_one(20'000, 1), 2, spinning) == 2);
+  // One replica: N = 5000 and 6500 (0.95x, 1.12x) either; N = 8000 and 10^4 (1.4x, 1.31x; a
+  // rank-one row of 12 units gave N = 10^4 one thread, 0.76x of the best): two; under PASSIVE
+  // N = 6 10^4 (0.68x): one.
+  CHECK(default_threads(rank_one(5'000, 1), 2, spinning) == 1);
+  CHECK(default_threads(rank_one(8'000, 1), 2, spinning) == 2);
+  CHECK(default_threads(rank_one(10'000, 1), 2, spinning) == 2);
+  CHECK(default_threads(rank_one(60'000, 1), 2, passive) == 1);
   CHECK(default_threads(rank_one(20'000, 1), 2, passive) == 1);
   CHECK(default_threads(rank_one(100'000, 1), 2, passive) == 2);
   // ER N = 10^6, degree 100: every thread offered, and never more.
