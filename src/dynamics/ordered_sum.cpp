@@ -118,7 +118,7 @@ void OrderedColumnSums::sum(const double* values, double* out) {
       sum_blocks_any(values, m_rows, m_width, b0, b1, partial);
       break;
   }
-  // Every block sum visible to the master before it adds them.
+    // Every block sum visible to the master before it adds them.
 #pragma omp barrier
 #pragma omp master
   add_blocks(out);

@@ -122,13 +122,13 @@ std::vector<double> mixed_values(std::size_t count) {
 
 }  // namespace
 
-TEST_CASE("Ordered sums in a team of 1, 2 or 3 equal the documented order bit for bit",
-          "[team]") {
+TEST_CASE("Ordered sums in a team of 1, 2 or 3 equal the documented order bit for bit", "[team]") {
   // Widths with a grouped kernel (1, 2, 4, 8, 16 columns: several blocks summed side by side)
   // and without (3, 70: past the 64 columns summed at once); row counts with one short block,
   // exactly full blocks, and more blocks than a group (20 000 rows: 10 blocks).
   for (const std::size_t width : std::initializer_list<std::size_t>{1, 2, 3, 4, 8, 16, 70}) {
-    for (const std::size_t rows : std::initializer_list<std::size_t>{1, 2047, 2048, 4097, 5000, 20000}) {
+    for (const std::size_t rows :
+         std::initializer_list<std::size_t>{1, 2047, 2048, 4097, 5000, 20000}) {
       const std::vector<double> values = mixed_values(rows * width);
       const std::vector<double> expected = documented_sums(values, rows, width);
       for (const int threads : {1, 2, 3}) {
