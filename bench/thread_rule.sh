@@ -60,7 +60,7 @@ printf "%-24s %-8s %10s %9s %9s %9s %8s %13s\n" network policy "rule work" "1 th
 er_specs=("100 5 4000" "300 10 4000" "1000 10 2000" "1000 100 200" "10000 10 200"
   "10000 100 20" "100000 20 10" "100000 100 2")
 [[ $networks == complete ]] && er_specs=()
-for spec in "${er_specs[@]}"; do
+for spec in ${er_specs[@]+"${er_specs[@]}"}; do
   read -r n d T <<<"$spec"
   net="$tmp/er_${n}_${d}.h5"
   "$hmfnet" generate er --n "$n" --mean-degree "$d" --seed 1 -o "$net" 2>"$tmp/stderr" ||
@@ -68,12 +68,13 @@ for spec in "${er_specs[@]}"; do
   row "ER N=$n d=$d" "$net" "$T"
 done
 # The complete graph (O(N) rank-one force): N, replicas, T; about 2e8 rows x replicas x steps
-# (the QSS drivers' scenes: N = 200 .. 1600 with 16 replicas; N = 10^4 with one replica, just
-# below the rule's second thread at N = 16,700).
+# (the QSS drivers' scenes: N = 200 .. 1600 with 16 replicas; N = 10^4 with one replica, which
+# an earlier rule ran on one thread at 0.76x of two: docs/performance.md "Ordered sums side by
+# side").
 complete_specs=("100 1 20000" "200 16 600" "1600 16 80" "1000 1 2000" "10000 1 200"
   "20000 1 100" "100000 1 20")
 [[ $networks == er ]] && complete_specs=()
-for spec in "${complete_specs[@]}"; do
+for spec in ${complete_specs[@]+"${complete_specs[@]}"}; do
   read -r n b T <<<"$spec"
   net="$tmp/complete_${n}.h5"
   [[ -f $net ]] || "$hmfnet" generate complete --n "$n" -o "$net" 2>"$tmp/stderr" ||

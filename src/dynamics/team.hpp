@@ -1,8 +1,9 @@
 #pragma once
 // One OpenMP parallel region per time step (docs/performance.md). The integrator opens the region
 // once (`in_team`), and every loop of a step (kick, drift, sin and cos, the row kernel, the ordered
-// sums) is an orphaned `#pragma omp for` that binds to it: a step forks and joins once instead of
-// once per loop, and its loops meet only at the barriers they need. The same functions called
+// sums) is an orphaned `#pragma omp for`, or a split by thread number closed by an orphaned
+// `#pragma omp barrier`, that binds to it: a step forks and joins once instead of once per loop,
+// and its loops meet only at the barriers they need. The same functions called
 // outside a region run serially on the calling thread (an orphaned worksharing loop then has a
 // team of one, an orphaned barrier does nothing), so start-up evaluations and tests need no
 // region.

@@ -26,11 +26,14 @@ WaitPolicy wait_policy_from_environment();
 ///    keeps each within 1.2x (the earlier 2 10^5, in units that counted a sparse row as 40 and a
 ///    rank-one row as 12, gave K_N N = 10^4 and ER N = 1000, d = 100 one thread: 0.76x, 0.68x);
 ///  - PASSIVE: 0.6-0.7x at 3 .. 4 10^5 (ER N = 10^4, d = 10; K_N N = 2 10^4 with one; K_N
-///    N = 1600 with 16), 0.68x at K_N N = 6 10^4 with one (9 10^5), 1.0x at K_N N = 10^5 with
-///    one (1.5 10^6), 1.08x and 1.27x (two runs, AMD EPYC) at ER N = 10^4, d = 100 (1.2 10^6),
-///    1.4-1.9x from 4 10^6 on (ER N = 10^5, d = 20 and 100): a second thread from 1.2 10^6 on.
+///    N = 1600 with 16; Intel and AMD), 0.68x at K_N N = 6 10^4 with one (9 10^5) and 0.84x at
+///    N = 8 10^4 (1.2 10^6), 1.0x at K_N N = 10^5 with one (1.5 10^6; Intel), 1.02x (Intel) and
+///    1.08x and 1.27x (two runs, AMD EPYC) at ER N = 10^4, d = 100 (1,199,058 with its 999,058
+///    entries), 1.6-2.0x from 4 10^6 on (ER N = 10^5, d = 20 and 100): a second thread from
+///    1.16 10^6 on, which keeps ER N = 10^4, d = 100 on two (at 600,000 a thread it fell just
+///    below, to one: 0.79x of the AMD's best) and K_N with one replica on one below N = 77,334.
 inline constexpr std::int64_t k_work_per_thread_spinning = 50'000;
-inline constexpr std::int64_t k_work_per_thread_passive = 600'000;
+inline constexpr std::int64_t k_work_per_thread_passive = 580'000;
 
 /// A sparse row's own work in a step, in gathers (one stored entry's [cos, sin] read and added):
 /// the row's sin/cos, kick and drift, its row finish and its terms of the ordered sums. From
@@ -45,7 +48,7 @@ inline constexpr std::int64_t k_row_work = 20;
 /// with one replica (K_N N = 2 10^4) and 3.6 ns a row and replica with 16 (N = 2000) on the
 /// Intel Xeon, ~15 gathers of 0.27 ns; with the thresholds above K_N takes a second thread from
 /// N = 6667 with one replica and N = 417 with 16 (spinning; 0.82-0.85x measured at N = 400 and
-/// 0.99x at N = 625 with 16), and from N = 8 10^4 with one under PASSIVE.
+/// 0.99x at N = 625 with 16), and from N = 77,334 with one under PASSIVE (0.84x at 8 10^4).
 /// RankOneForce::row_work gives it.
 inline constexpr std::int64_t k_rank_one_row_work = 15;
 

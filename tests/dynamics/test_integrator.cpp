@@ -128,7 +128,7 @@ TEST_CASE("Kick and kick-drift of one replica take the general loop's operations
           "[integrator]") {
   // One replica runs a flat loop of its own; these are the operations of the loop over rows and
   // replicas written out: p += (c K) g, then theta += c_drift p. Values of mixed magnitude, so
-  // that c (K g) or a contraction into one fused multiply-add would change bits.
+  // that forming c (K g) instead changes bits.
   const NodeIndex rows = 1000;
   RotorState state;
   state.rows = rows;

@@ -128,7 +128,7 @@ TEST_CASE("Ordered sums in a team of 1, 2 or 3 equal the documented order bit fo
   // exactly full blocks, and more blocks than a group (20 000 rows: 10 blocks).
   for (const std::size_t width : std::initializer_list<std::size_t>{1, 2, 3, 4, 8, 16, 70}) {
     for (const std::size_t rows :
-         std::initializer_list<std::size_t>{1, 2047, 2048, 4097, 5000, 20000}) {
+         std::initializer_list<std::size_t>{0, 1, 2047, 2048, 4097, 5000, 20000}) {
       const std::vector<double> values = mixed_values(rows * width);
       const std::vector<double> expected = documented_sums(values, rows, width);
       for (const int threads : {1, 2, 3}) {
