@@ -1,59 +1,43 @@
 #include "dynamics/integrator.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <utility>
 
 #include "core/error.hpp"
+#include "dynamics/kick_drift_lanes.hpp"
 #include "dynamics/splitting_coefficients.hpp"
 #include "dynamics/team.hpp"
 
 namespace hmfnet {
 
-// One replica: the cells in one flat loop, which the compiler vectorises (with a replica loop of
-// one trip inside the row loop it did not: kick and kick_drift took 36% of a leap-frog step of
-// the complete graph, N = 2 10^4, bench RankOneStep). c K[0] is formed first, as c * K[b] * g
-// forms it, so the bits are those of the general loop.
-void kick(RotorState& state, double c, const std::vector<double>& K, const std::vector<double>& g) {
+namespace {
+
+// Rows [r0, r1) of a pass in blocks of ~1024 cells, shared out over the team: long enough for the
+// vector loops of kick_drift_lanes.cpp, short enough to share out.
+void kick_drift_pass(RotorState& state, double c_kick, const std::vector<double>& K,
+                     const std::vector<double>& g, double c_drift, bool drift) {
   const auto w = static_cast<std::size_t>(state.replicas);
   const auto rows = static_cast<std::size_t>(state.rows);
-  if (w == 1) {
-    const double cK = c * K[0];
-    double* p = state.p.data();
-    const double* gk = g.data();
+  const KickDriftCells cells{state.p.data(), drift ? state.theta.data() : nullptr, g.data(),
+                             K.data(), w};
+  const std::size_t block = std::max<std::size_t>(1, 1024 / w);
+  const std::size_t blocks = (rows + block - 1) / block;
 #pragma omp for schedule(static)
-    for (std::size_t k = 0; k < rows; ++k) p[k] += cK * gk[k];
-    return;
-  }
-#pragma omp for schedule(static)
-  for (std::size_t r = 0; r < rows; ++r)
-    for (std::size_t b = 0; b < w; ++b) state.p[r * w + b] += c * K[b] * g[r * w + b];
+  for (std::size_t i = 0; i < blocks; ++i)
+    kick_drift_rows(cells, c_kick, c_drift, i * block, std::min(rows, (i + 1) * block));
+}
+
+}  // namespace
+
+void kick(RotorState& state, double c, const std::vector<double>& K, const std::vector<double>& g) {
+  kick_drift_pass(state, c, K, g, 0.0, false);
 }
 
 void kick_drift(RotorState& state, double c_kick, const std::vector<double>& K,
                 const std::vector<double>& g, double c_drift) {
-  const auto w = static_cast<std::size_t>(state.replicas);
-  const auto rows = static_cast<std::size_t>(state.rows);
-  if (w == 1) {  // as in kick
-    const double cK = c_kick * K[0];
-    double* p = state.p.data();
-    double* theta = state.theta.data();
-    const double* gk = g.data();
-#pragma omp for schedule(static)
-    for (std::size_t k = 0; k < rows; ++k) {
-      p[k] += cK * gk[k];
-      theta[k] += c_drift * p[k];
-    }
-    return;
-  }
-#pragma omp for schedule(static)
-  for (std::size_t r = 0; r < rows; ++r) {
-    for (std::size_t b = 0; b < w; ++b) {
-      const std::size_t k = r * w + b;
-      state.p[k] += c_kick * K[b] * g[k];
-      state.theta[k] += c_drift * state.p[k];
-    }
-  }
+  kick_drift_pass(state, c_kick, K, g, c_drift, true);
 }
 
 void Integrator::step(RotorState& state, double h, const std::vector<double>& K,

@@ -71,11 +71,12 @@ constexpr double k_cos5 = 4.16666666666665929218e-2;
 
 }  // namespace sincos_constants
 
-/// One double as a lane of the sincos template below (sincos.cpp has the 4-lane vector one):
-/// Real and Bits, a value's bits and back, and the all-ones mask where a <= b.
+/// One double as a lane of the sincos template below (sincos.cpp has the vector ones): Real and
+/// Bits, a value's bits and back, the masks where a <= b and where a is odd, and a selection.
 struct ScalarLane {
   using Real = double;
   using Bits = std::uint64_t;
+  using Mask = std::uint64_t;  // all ones (true) or zero (false)
   HMFNET_HD_INLINE static Bits bits(Real x) {
 #if defined(__CUDA_ARCH__)
     return static_cast<Bits>(__double_as_longlong(x));
@@ -94,9 +95,12 @@ struct ScalarLane {
     return x;
 #endif
   }
-  HMFNET_HD_INLINE static Bits at_most(Bits a, std::uint64_t b) {
-    return Bits{0} - static_cast<Bits>(a <= b);
+  HMFNET_HD_INLINE static Mask at_most(Bits a, std::uint64_t b) {
+    return Mask{0} - static_cast<Mask>(a <= b);
   }
+  HMFNET_HD_INLINE static Mask odd(Bits a) { return Mask{0} - (a & 1U); }
+  /// `a` where `m` is true, else `b`.
+  HMFNET_HD_INLINE static Bits select(Mask m, Bits a, Bits b) { return (a & m) | (b & ~m); }
 };
 
 /// cos and sin of each lane's angle (Lanes: ScalarLane, or sincos.cpp's vectors): Cody-Waite
@@ -113,8 +117,8 @@ HMFNET_HD_INLINE void sincos_lanes(const typename Lanes::Real& angle, typename L
   const std::uint64_t range_bits = ScalarLane::bits(k_reduced_range);
   // Integer comparison of |x|'s bits (a NaN's are above infinity's): a floating-point one may
   // trap and then stays a branch.
-  const Bits inside = Lanes::at_most(Lanes::bits(angle) & k_abs_mask, range_bits);
-  const Real x = Lanes::real(Lanes::bits(angle) & inside);
+  const typename Lanes::Mask inside = Lanes::at_most(Lanes::bits(angle) & k_abs_mask, range_bits);
+  const Real x = Lanes::real(Lanes::select(inside, Lanes::bits(angle), Bits{}));
   const Real t = x * k_two_over_pi + k_round_shift;
   const Real q = t - k_round_shift;
   const Bits j = Lanes::bits(t);  // q mod 4 = j & 3
@@ -143,9 +147,9 @@ HMFNET_HD_INLINE void sincos_lanes(const typename Lanes::Real& angle, typename L
   const Real cos_r = w + (((1.0 - w) - half_z) + (z * z * pc - r * r_lo));
   // Quadrant j: (cos, sin)(x) = (cos r, sin r), (-sin r, cos r), (-cos r, -sin r), (sin r,
   // -cos r) for j = 0, 1, 2, 3: swap when j is odd, then flip the sign bits.
-  const Bits swap = 0 - (j & 1U);
-  const Bits sin_bits = (Lanes::bits(sin_r) & ~swap) | (Lanes::bits(cos_r) & swap);
-  const Bits cos_bits = (Lanes::bits(cos_r) & ~swap) | (Lanes::bits(sin_r) & swap);
+  const typename Lanes::Mask swap = Lanes::odd(j);
+  const Bits sin_bits = Lanes::select(swap, Lanes::bits(cos_r), Lanes::bits(sin_r));
+  const Bits cos_bits = Lanes::select(swap, Lanes::bits(sin_r), Lanes::bits(cos_r));
   s = Lanes::real(sin_bits ^ ((j << 62) & k_sign_bit));
   c = Lanes::real(cos_bits ^ (((j + 1U) << 62) & k_sign_bit));
 }

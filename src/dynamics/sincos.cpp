@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <type_traits>
 
 #include "dynamics/kernel_arithmetic.hpp"
 
@@ -37,20 +38,40 @@ HMFNET_INLINE To bits_as(const From& from) {
 // The lanes of the shared sincos template (kernel_arithmetic.hpp: sincos_lanes, which a CUDA
 // device and sincos_one also instantiate, on one double): the same operations, so the same bits
 // by construction.
-template <typename D, typename U>
+// Masks: with MaskRegisters (AVX-512), a comparison's result used in selections, which AVX-512
+// holds in a mask register and selects with in one blend (five fewer vector instructions a
+// vector than the bit formula: 1.59 -> 1.43 ns an angle, docs/performance.md "sincos selections
+// in mask registers"); otherwise -1 or 0 per lane combined by and/or: SSE2 has no 64-bit
+// comparison (the comparisons made the baseline 1.17x slower) and AVX2's blends measured no
+// faster. Both select without arithmetic: the same bits.
+template <typename D, typename U, bool MaskRegisters>
 struct VectorLanes {
   using Real = D;
   using Bits = U;
+  using Mask = std::conditional_t<MaskRegisters, decltype(U{} <= U{}), U>;
   static constexpr std::size_t k_lanes = sizeof(D) / sizeof(double);
   static HMFNET_INLINE Bits bits(const Real& x) { return bits_as<Bits>(x); }
   static HMFNET_INLINE Real real(const Bits& b) { return bits_as<Real>(b); }
-  // A vector comparison gives -1 (all ones) or 0 per lane.
-  static HMFNET_INLINE Bits at_most(const Bits& a, std::uint64_t b) {
-    return bits_as<Bits>(a <= b);
+  static HMFNET_INLINE Mask at_most(const Bits& a, std::uint64_t b) {
+    return bits_as<Mask>(a <= b);
+  }
+  static HMFNET_INLINE Mask odd(const Bits& a) {
+    if constexpr (MaskRegisters) {
+      return (a & 1U) != 0U;
+    } else {
+      return 0U - (a & 1U);
+    }
+  }
+  static HMFNET_INLINE Bits select(const Mask& m, const Bits& a, const Bits& b) {
+    if constexpr (MaskRegisters) {
+      return m ? a : b;
+    } else {
+      return (a & m) | (b & ~m);
+    }
   }
 };
-using Lanes4 = VectorLanes<VecD4, VecU4>;
-using Lanes8 = VectorLanes<VecD8, VecU8>;
+using Lanes4 = VectorLanes<VecD4, VecU4, false>;
+using Lanes8 = VectorLanes<VecD8, VecU8, true>;
 
 // [c0, s0, c1, s1, ...] as two vectors of the lanes' width: register shuffles (unpack and
 // permute) instead of one scalar store per value, which cost ~1 ns an angle in the AVX2 version.
@@ -71,12 +92,11 @@ HMFNET_INLINE void store_interleaved(const VecD8& c, const VecD8& s, double* cs)
 template <typename Lanes>
 HMFNET_INLINE void sincos_block(const double* x, std::size_t n, double* cs) {
   using Real = typename Lanes::Real;
-  using Bits = typename Lanes::Bits;
   constexpr std::size_t lanes = Lanes::k_lanes;
   const std::uint64_t range_bits = ScalarLane::bits(k_reduced_range);
   // All ones in a lane while every angle it saw was within the reduced range (the mask
   // sincos_lanes forms): the C library's pass below runs only when one was not.
-  Bits inside = ~Bits{};
+  typename Lanes::Mask inside = ~typename Lanes::Mask{};
   Real c;
   Real s;
   const std::size_t body = n - n % lanes;
@@ -97,7 +117,7 @@ HMFNET_INLINE void sincos_block(const double* x, std::size_t n, double* cs) {
     std::memcpy(cs + 2 * body, tail, 2 * (n - body) * sizeof(double));
   }
   std::uint64_t all_inside = ~std::uint64_t{0};
-  for (std::size_t l = 0; l < lanes; ++l) all_inside &= inside[l];
+  for (std::size_t l = 0; l < lanes; ++l) all_inside &= static_cast<std::uint64_t>(inside[l]);
   if (all_inside != 0) return;
   // The rare angles beyond the reduced range, and non-finite ones, from the C library.
   for (std::size_t k = 0; k < n; ++k) {
@@ -183,6 +203,8 @@ void run(SincosIsa isa, const double* x, std::size_t n, double* cs) {
 SincosIsa sincos_isa() { return chosen_isa(); }
 
 bool sincos_isa_available(SincosIsa isa) { return cpu_runs(isa); }
+
+SincosIsa sincos_isa_up_to(SincosIsa isa) { return widest_below(isa); }
 
 const char* sincos_isa_name(SincosIsa isa) {
   switch (isa) {

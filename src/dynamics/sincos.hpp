@@ -46,6 +46,9 @@ SincosIsa sincos_isa();
 /// Whether this CPU runs `isa` (the baseline: always).
 bool sincos_isa_available(SincosIsa isa);
 
+/// `isa` where this CPU runs it, else the widest set below it that it runs.
+SincosIsa sincos_isa_up_to(SincosIsa isa);
+
 /// "baseline", "avx2" or "avx512".
 const char* sincos_isa_name(SincosIsa isa);
 

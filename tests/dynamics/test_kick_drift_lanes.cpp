@@ -1,0 +1,77 @@
+// The kick and drift in vector lanes (dynamics/kick_drift_lanes.hpp): every instruction set this
+// CPU runs, every replica count (one flat run; widths that fill the lanes, leave a remainder, or
+// are narrower than them) and every row range give kernel_arithmetic.hpp's kicked_momentum and
+// drifted_angle, cell by cell, bit for bit.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+#include "dynamics/kernel_arithmetic.hpp"
+#include "dynamics/kick_drift_lanes.hpp"
+#include "dynamics/sincos.hpp"
+
+using namespace hmfnet;
+
+namespace {
+
+// Values of mixed magnitude, so that forming c (K g) instead of (c K) g, or dropping the drift's
+// use of the new p, changes bits.
+struct Cells {
+  std::vector<double> p, theta, g, K;
+  Cells(std::size_t rows, std::size_t w) : p(rows * w), theta(rows * w), g(rows * w), K(w) {
+    for (std::size_t k = 0; k < p.size(); ++k) {
+      const auto x = static_cast<double>(k);
+      theta[k] = 0.1 + 1e-3 * static_cast<double>(k % 97);
+      p[k] = 6.0 + std::sin(x);
+      g[k] = std::cos(0.7 * x) * std::pow(10.0, static_cast<double>(k % 9) - 4);
+    }
+    for (std::size_t b = 0; b < w; ++b) K[b] = (1.3 + 0.1 * static_cast<double>(b)) / 3.0;
+  }
+  KickDriftCells view(std::size_t w, bool drift) {
+    return {p.data(), drift ? theta.data() : nullptr, g.data(), K.data(), w};
+  }
+};
+
+}  // namespace
+
+TEST_CASE("the kick and drift lanes give the scalar cell's bits in every instruction set",
+          "[kick_drift_lanes]") {
+  const double c_kick = 0.05 / 3.0, c_drift = 0.1 / 7.0;
+  const std::size_t rows = 37;
+  for (const std::size_t w : {1U, 2U, 3U, 4U, 7U, 8U, 12U, 16U, 17U, 24U}) {
+    for (const bool drift : {false, true}) {
+      // Rows [r0, r1) changed, the others left as they were.
+      for (const auto& range :
+           {std::pair<std::size_t, std::size_t>{0, rows}, {3, 4}, {5, 30}, {10, 10}}) {
+        Cells expected(rows, w);
+        for (std::size_t r = range.first; r < range.second; ++r) {
+          for (std::size_t b = 0; b < w; ++b) {
+            const std::size_t k = r * w + b;
+            expected.p[k] = kicked_momentum(expected.p[k], c_kick, expected.K[b], expected.g[k]);
+            if (drift) expected.theta[k] = drifted_angle(expected.theta[k], c_drift, expected.p[k]);
+          }
+        }
+        for (const SincosIsa isa : {SincosIsa::baseline, SincosIsa::avx2, SincosIsa::avx512}) {
+          if (!sincos_isa_available(isa)) {
+            WARN(sincos_isa_name(isa) << " not on this CPU: not compared");
+            continue;
+          }
+          INFO(sincos_isa_name(isa) << ", " << w << " replicas, drift " << drift << ", rows "
+                                    << range.first << ".." << range.second);
+          Cells cells(rows, w);
+          kick_drift_rows_isa(isa, cells.view(w, drift), c_kick, c_drift, range.first,
+                              range.second);
+          CHECK(cells.p == expected.p);
+          CHECK(cells.theta == expected.theta);
+        }
+        // The default set is one of them.
+        Cells cells(rows, w);
+        kick_drift_rows(cells.view(w, drift), c_kick, c_drift, range.first, range.second);
+        CHECK(cells.p == expected.p);
+        CHECK(cells.theta == expected.theta);
+      }
+    }
+  }
+}
