@@ -1,6 +1,7 @@
 #include "dynamics/host_stepper.hpp"
 
 #include <cmath>
+#include <functional>
 
 #include "dynamics/ordered_sum.hpp"
 
@@ -13,11 +14,15 @@ void HostStepper::set_state(const RotorState& state) {
 
 void HostStepper::advance(const Integrator& method, double h, const std::vector<double>& K,
                           std::int64_t steps, std::vector<double>* order) {
-  for (std::int64_t i = 0; i < steps; ++i) {
-    method.step(m_state, h, K, m_f);
-    if (order != nullptr)
+  // All steps in one team, each step's closing kick joined to the next step's first pass
+  // (Integrator::steps); the order sums are read after each step's force evaluation.
+  std::function<void()> keep_order;
+  if (order != nullptr) {
+    keep_order = [&] {
       order->insert(order->end(), m_f.sums().order.begin(), m_f.sums().order.end());
+    };
   }
+  method.steps(m_state, h, K, m_f, steps, keep_order);
 }
 
 StepperSums HostStepper::sums() {

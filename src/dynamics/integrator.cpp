@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <functional>
 #include <numeric>
 #include <utility>
 
@@ -14,10 +16,10 @@ namespace hmfnet {
 
 namespace {
 
-// Rows [r0, r1) of a pass in blocks of ~1024 cells, shared out over the team: long enough for the
-// vector loops of kick_drift_lanes.cpp, short enough to share out.
-void kick_drift_pass(RotorState& state, double c_kick, const std::vector<double>& K,
-                     const std::vector<double>& g, double c_drift, bool drift) {
+// One pass over all rows in blocks of ~1024 cells, shared out over the team: long enough for the
+// vector loops of kick_drift_lanes.cpp, short enough to share out. theta drifts where `drift`.
+void kick_drift_pass(RotorState& state, const std::vector<double>& K, const std::vector<double>& g,
+                     const KickDriftCoefficients& c, bool drift) {
   const auto w = static_cast<std::size_t>(state.replicas);
   const auto rows = static_cast<std::size_t>(state.rows);
   const KickDriftCells cells{state.p.data(), drift ? state.theta.data() : nullptr, g.data(),
@@ -26,18 +28,46 @@ void kick_drift_pass(RotorState& state, double c_kick, const std::vector<double>
   const std::size_t blocks = (rows + block - 1) / block;
 #pragma omp for schedule(static)
   for (std::size_t i = 0; i < blocks; ++i)
-    kick_drift_rows(cells, c_kick, c_drift, i * block, std::min(rows, (i + 1) * block));
+    kick_drift_rows(cells, c, i * block, std::min(rows, (i + 1) * block));
 }
+
+// `steps` steps of the splitting kicks[0] drifts[0] kicks[1] ... drifts[s-1] kicks[s] (times h):
+// each step's closing kick joins the next step's opening kick and drift in one pass (the same
+// operations on every cell in the same order: the same bits as step after step), the last
+// step's closing kick at the end. after_step runs on the master after each step's last force
+// evaluation, when f.sums() is that step's.
+void advance_splitting(RotorState& state, double h, const std::vector<double>& K,
+                       ForceEvaluation& f, const std::vector<double>& kicks,
+                       const std::vector<double>& drifts, std::int64_t steps,
+                       const std::function<void()>& after_step) {
+  for (std::int64_t n = 0; n < steps; ++n) {
+    for (std::size_t i = 0; i < drifts.size(); ++i) {
+      KickDriftCoefficients c{{kicks[i] * h, 0.0}, 1, drifts[i] * h};
+      if (i == 0 && n > 0) c = {{kicks.back() * h, kicks[0] * h}, 2, drifts[0] * h};
+      kick_drift_pass(state, K, f.g(), c, true);
+      f.update(state);
+    }
+    if (after_step) {
+#pragma omp master
+      after_step();
+    }
+  }
+  if (steps > 0) kick_drift_pass(state, K, f.g(), {{kicks.back() * h, 0.0}, 1, 0.0}, false);
+}
+
+// Leap-frog as a splitting: c = h / 2 and h, as the kicks and the drift have always been formed.
+const std::vector<double> k_leapfrog_kicks{0.5, 0.5};
+const std::vector<double> k_leapfrog_drifts{1.0};
 
 }  // namespace
 
 void kick(RotorState& state, double c, const std::vector<double>& K, const std::vector<double>& g) {
-  kick_drift_pass(state, c, K, g, 0.0, false);
+  kick_drift_pass(state, K, g, {{c, 0.0}, 1, 0.0}, false);
 }
 
 void kick_drift(RotorState& state, double c_kick, const std::vector<double>& K,
                 const std::vector<double>& g, double c_drift) {
-  kick_drift_pass(state, c_kick, K, g, c_drift, true);
+  kick_drift_pass(state, K, g, {{c_kick, 0.0}, 1, c_drift}, true);
 }
 
 void Integrator::step(RotorState& state, double h, const std::vector<double>& K,
@@ -47,11 +77,36 @@ void Integrator::step(RotorState& state, double h, const std::vector<double>& K,
   in_team([&] { advance(state, h, K, f); });
 }
 
+void Integrator::steps(RotorState& state, double h, const std::vector<double>& K,
+                       ForceEvaluation& f, std::int64_t n,
+                       const std::function<void()>& after_step) const {
+  if (n <= 0) return;
+  f.prepare(state);
+  prepare(state);
+  in_team([&] { advance_steps(state, h, K, f, n, after_step); });
+}
+
+void Integrator::advance_steps(RotorState& state, double h, const std::vector<double>& K,
+                               ForceEvaluation& f, std::int64_t n,
+                               const std::function<void()>& after_step) const {
+  for (std::int64_t i = 0; i < n; ++i) {
+    advance(state, h, K, f);
+    if (after_step) {
+#pragma omp master
+      after_step();
+    }
+  }
+}
+
 void LeapFrog::advance(RotorState& state, double h, const std::vector<double>& K,
                        ForceEvaluation& f) const {
-  kick_drift(state, 0.5 * h, K, f.g(), h);
-  f.update(state);
-  kick(state, 0.5 * h, K, f.g());
+  advance_splitting(state, h, K, f, k_leapfrog_kicks, k_leapfrog_drifts, 1, {});
+}
+
+void LeapFrog::advance_steps(RotorState& state, double h, const std::vector<double>& K,
+                             ForceEvaluation& f, std::int64_t n,
+                             const std::function<void()>& after_step) const {
+  advance_splitting(state, h, K, f, k_leapfrog_kicks, k_leapfrog_drifts, n, after_step);
 }
 
 KickDriftSplitting::KickDriftSplitting(std::string name, int order, std::vector<double> kicks,
@@ -119,11 +174,13 @@ double splitting_stability_limit(const std::vector<double>& kicks,
 
 void KickDriftSplitting::advance(RotorState& state, double h, const std::vector<double>& K,
                                  ForceEvaluation& f) const {
-  for (std::size_t i = 0; i < m_drifts.size(); ++i) {
-    kick_drift(state, m_kicks[i] * h, K, f.g(), m_drifts[i] * h);
-    f.update(state);
-  }
-  kick(state, m_kicks.back() * h, K, f.g());
+  advance_splitting(state, h, K, f, m_kicks, m_drifts, 1, {});
+}
+
+void KickDriftSplitting::advance_steps(RotorState& state, double h, const std::vector<double>& K,
+                                       ForceEvaluation& f, std::int64_t n,
+                                       const std::function<void()>& after_step) const {
+  advance_splitting(state, h, K, f, m_kicks, m_drifts, n, after_step);
 }
 
 KickDriftSplitting yoshida4() {

@@ -2,7 +2,9 @@
 // Time steppers for H = sum_n p_n^2/2 + K V(theta) (eq:hamiltonianNetworkCase), behind one
 // interface (MFEM's ODE-solver family style). The force is evaluated by a CouplingForce and
 // cached between steps: a splitting that ends with a kick at the new phases leaves the force
-// there for the next step (first-same-as-last), so leap-frog costs one evaluation per step.
+// there for the next step (first-same-as-last), so leap-frog costs one evaluation per step;
+// over several steps (steps()) that closing kick also shares the next step's first pass over the
+// cells.
 //
 // The family, with force evaluations per step (what a work-precision chart charges):
 //   leapfrog     order 2, symplectic, 1 evaluation
@@ -10,6 +12,8 @@
 //   blanes_moan  order 4, symplectic, 6 evaluations (Blanes & Moan 2002, SRKN_6^b)
 //   rk4          order 4, not symplectic, 4 evaluations (the contrast: secular energy drift)
 #include <cmath>
+#include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -51,6 +55,13 @@ class Integrator {
   /// current phases; on exit at the new ones. One parallel region for the whole step
   /// (team.hpp): the buffers are sized first, then every thread runs advance().
   void step(RotorState& state, double h, const std::vector<double>& K, ForceEvaluation& f) const;
+  /// `n` steps, with the bits of `n` calls of step(), in one parallel region. after_step (may be
+  /// empty) runs on the master thread after each step's last force evaluation and may read
+  /// f.sums() (that step's) and nothing of `state`: a splitting applies a step's closing kick in
+  /// one pass with the next step's opening kick and drift, so the momenta are complete only when
+  /// steps() returns.
+  void steps(RotorState& state, double h, const std::vector<double>& K, ForceEvaluation& f,
+             std::int64_t n, const std::function<void()>& after_step) const;
   /// Global order p: the state error after a fixed time is O(h^p).
   virtual int order() const = 0;
   virtual std::string name() const = 0;
@@ -66,6 +77,10 @@ class Integrator {
   /// The step, run by every thread of the step's team (or by the caller alone).
   virtual void advance(RotorState& state, double h, const std::vector<double>& K,
                        ForceEvaluation& f) const = 0;
+  /// steps() inside the team: advance() n times by default.
+  virtual void advance_steps(RotorState& state, double h, const std::vector<double>& K,
+                             ForceEvaluation& f, std::int64_t n,
+                             const std::function<void()>& after_step) const;
 };
 
 /// Kick-drift-kick leap-frog (Stormer-Verlet): second order, symplectic, time-reversible; the
@@ -81,6 +96,8 @@ class LeapFrog : public Integrator {
  private:
   void advance(RotorState& state, double h, const std::vector<double>& K,
                ForceEvaluation& f) const override;
+  void advance_steps(RotorState& state, double h, const std::vector<double>& K, ForceEvaluation& f,
+                     std::int64_t n, const std::function<void()>& after_step) const override;
 };
 
 /// A kick-drift-...-kick splitting
@@ -107,6 +124,8 @@ class KickDriftSplitting : public Integrator {
  private:
   void advance(RotorState& state, double h, const std::vector<double>& K,
                ForceEvaluation& f) const override;
+  void advance_steps(RotorState& state, double h, const std::vector<double>& K, ForceEvaluation& f,
+                     std::int64_t n, const std::function<void()>& after_step) const override;
   std::string m_name;
   int m_order;
   std::vector<double> m_kicks;

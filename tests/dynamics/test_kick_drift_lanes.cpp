@@ -38,39 +38,50 @@ struct Cells {
 
 TEST_CASE("the kick and drift lanes give the scalar cell's bits in every instruction set",
           "[kick_drift_lanes]") {
-  const double c_kick = 0.05 / 3.0, c_drift = 0.1 / 7.0;
+  const double c_close = 0.05 / 3.0, c_open = 0.07 / 3.0, c_drift = 0.1 / 7.0;
   const std::size_t rows = 37;
   for (const std::size_t w : {1U, 2U, 3U, 4U, 7U, 8U, 12U, 16U, 17U, 24U}) {
     for (const bool drift : {false, true}) {
-      // Rows [r0, r1) changed, the others left as they were.
-      for (const auto& range :
-           {std::pair<std::size_t, std::size_t>{0, rows}, {3, 4}, {5, 30}, {10, 10}}) {
-        Cells expected(rows, w);
-        for (std::size_t r = range.first; r < range.second; ++r) {
-          for (std::size_t b = 0; b < w; ++b) {
-            const std::size_t k = r * w + b;
-            expected.p[k] = kicked_momentum(expected.p[k], c_kick, expected.K[b], expected.g[k]);
-            if (drift) expected.theta[k] = drifted_angle(expected.theta[k], c_drift, expected.p[k]);
+      for (const int kicks : {1, 2}) {
+        // One kick by c_open, or a step's closing kick (c_close) then the next one's (c_open).
+        const KickDriftCoefficients c = kicks == 2
+                                            ? KickDriftCoefficients{{c_close, c_open}, 2, c_drift}
+                                            : KickDriftCoefficients{{c_open, 0.0}, 1, c_drift};
+        // Rows [r0, r1) changed, the others left as they were.
+        for (const auto& range :
+             {std::pair<std::size_t, std::size_t>{0, rows}, {3, 4}, {5, 30}, {10, 10}}) {
+          Cells expected(rows, w);
+          for (std::size_t r = range.first; r < range.second; ++r) {
+            for (std::size_t b = 0; b < w; ++b) {
+              const std::size_t k = r * w + b;
+              if (kicks == 2) {
+                expected.p[k] =
+                    kicked_momentum(expected.p[k], c_close, expected.K[b], expected.g[k]);
+              }
+              expected.p[k] = kicked_momentum(expected.p[k], c_open, expected.K[b], expected.g[k]);
+              if (drift) {
+                expected.theta[k] = drifted_angle(expected.theta[k], c_drift, expected.p[k]);
+              }
+            }
           }
-        }
-        for (const SincosIsa isa : {SincosIsa::baseline, SincosIsa::avx2, SincosIsa::avx512}) {
-          if (!sincos_isa_available(isa)) {
-            WARN(sincos_isa_name(isa) << " not on this CPU: not compared");
-            continue;
+          for (const SincosIsa isa : {SincosIsa::baseline, SincosIsa::avx2, SincosIsa::avx512}) {
+            if (!sincos_isa_available(isa)) {
+              WARN(sincos_isa_name(isa) << " not on this CPU: not compared");
+              continue;
+            }
+            INFO(sincos_isa_name(isa) << ", " << w << " replicas, drift " << drift << ", " << kicks
+                                      << " kicks, rows " << range.first << ".." << range.second);
+            Cells cells(rows, w);
+            kick_drift_rows_isa(isa, cells.view(w, drift), c, range.first, range.second);
+            CHECK(cells.p == expected.p);
+            CHECK(cells.theta == expected.theta);
           }
-          INFO(sincos_isa_name(isa) << ", " << w << " replicas, drift " << drift << ", rows "
-                                    << range.first << ".." << range.second);
+          // The default set is one of them.
           Cells cells(rows, w);
-          kick_drift_rows_isa(isa, cells.view(w, drift), c_kick, c_drift, range.first,
-                              range.second);
+          kick_drift_rows(cells.view(w, drift), c, range.first, range.second);
           CHECK(cells.p == expected.p);
           CHECK(cells.theta == expected.theta);
         }
-        // The default set is one of them.
-        Cells cells(rows, w);
-        kick_drift_rows(cells.view(w, drift), c_kick, c_drift, range.first, range.second);
-        CHECK(cells.p == expected.p);
-        CHECK(cells.theta == expected.theta);
       }
     }
   }
