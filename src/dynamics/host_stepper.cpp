@@ -18,6 +18,9 @@ void HostStepper::advance(const Integrator& method, double h, const std::vector<
   // (Integrator::steps); the order sums are read after each step's force evaluation.
   std::function<void()> keep_order;
   if (order != nullptr) {
+    // Reserved here, so that nothing allocates (and may throw) inside the steps' team.
+    order->reserve(order->size() +
+                   static_cast<std::size_t>(steps) * static_cast<std::size_t>(m_state.replicas));
     keep_order = [&] {
       order->insert(order->end(), m_f.sums().order.begin(), m_f.sums().order.end());
     };

@@ -22,6 +22,7 @@ void kick_drift_pass(RotorState& state, const std::vector<double>& K, const std:
                      const KickDriftCoefficients& c, bool drift) {
   const auto w = static_cast<std::size_t>(state.replicas);
   const auto rows = static_cast<std::size_t>(state.rows);
+  if (w == 0 || rows == 0) return;  // every thread alike: no worksharing loop is skipped by some
   const KickDriftCells cells{state.p.data(), drift ? state.theta.data() : nullptr, g.data(),
                              K.data(), w};
   const std::size_t block = std::max<std::size_t>(1, 1024 / w);
@@ -47,17 +48,20 @@ void advance_splitting(RotorState& state, double h, const std::vector<double>& K
       kick_drift_pass(state, K, f.g(), c, true);
       f.update(state);
     }
-    if (after_step) {
-#pragma omp master
-      after_step();
-    }
+    if (after_step) master_only(after_step);
   }
   if (steps > 0) kick_drift_pass(state, K, f.g(), {{kicks.back() * h, 0.0}, 1, 0.0}, false);
 }
 
 // Leap-frog as a splitting: c = h / 2 and h, as the kicks and the drift have always been formed.
-const std::vector<double> k_leapfrog_kicks{0.5, 0.5};
-const std::vector<double> k_leapfrog_drifts{1.0};
+const std::vector<double>& leapfrog_kicks() {
+  static const std::vector<double> kicks{0.5, 0.5};
+  return kicks;
+}
+const std::vector<double>& leapfrog_drifts() {
+  static const std::vector<double> drifts{1.0};
+  return drifts;
+}
 
 }  // namespace
 
@@ -91,22 +95,19 @@ void Integrator::advance_steps(RotorState& state, double h, const std::vector<do
                                const std::function<void()>& after_step) const {
   for (std::int64_t i = 0; i < n; ++i) {
     advance(state, h, K, f);
-    if (after_step) {
-#pragma omp master
-      after_step();
-    }
+    if (after_step) master_only(after_step);
   }
 }
 
 void LeapFrog::advance(RotorState& state, double h, const std::vector<double>& K,
                        ForceEvaluation& f) const {
-  advance_splitting(state, h, K, f, k_leapfrog_kicks, k_leapfrog_drifts, 1, {});
+  advance_splitting(state, h, K, f, leapfrog_kicks(), leapfrog_drifts(), 1, {});
 }
 
 void LeapFrog::advance_steps(RotorState& state, double h, const std::vector<double>& K,
                              ForceEvaluation& f, std::int64_t n,
                              const std::function<void()>& after_step) const {
-  advance_splitting(state, h, K, f, k_leapfrog_kicks, k_leapfrog_drifts, n, after_step);
+  advance_splitting(state, h, K, f, leapfrog_kicks(), leapfrog_drifts(), n, after_step);
 }
 
 KickDriftSplitting::KickDriftSplitting(std::string name, int order, std::vector<double> kicks,

@@ -59,7 +59,8 @@ class Integrator {
   /// empty) runs on the master thread after each step's last force evaluation and may read
   /// f.sums() (that step's) and nothing of `state`: a splitting applies a step's closing kick in
   /// one pass with the next step's opening kick and drift, so the momenta are complete only when
-  /// steps() returns.
+  /// steps() returns. After a failed exchange in the team (on_master, team.hpp) the remaining
+  /// steps run on without it and in_team rethrows at the end: their results are never used.
   void steps(RotorState& state, double h, const std::vector<double>& K, ForceEvaluation& f,
              std::int64_t n, const std::function<void()>& after_step) const;
   /// Global order p: the state error after a fixed time is O(h^p).

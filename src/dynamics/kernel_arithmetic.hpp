@@ -1,10 +1,10 @@
 #pragma once
 // The per-element arithmetic of a force evaluation and a step, written once for the host and a
 // CUDA device: the [cos, sin] of an angle (sincos.hpp), the leap-frog kick and drift
-// (integrator.cpp: kick, kick_drift) and the sum over one CSR row of the neighbours' [cos, sin]
-// (network_force.cpp: rows_kernel, rows_kernel_single), with g_n and the observable terms of
-// coupling_force.hpp. The CPU kernels and a device backend compute the same IEEE operations in
-// the same order, so a device reproduces the CPU's bits; tests/dynamics/
+// (kick_drift_lanes.cpp, which integrator.cpp's passes run) and the sum over one CSR row of the
+// neighbours' [cos, sin] (network_force.cpp: rows_kernel, rows_kernel_single), with g_n and the
+// observable terms of coupling_force.hpp. The CPU kernels and a device backend compute the same
+// IEEE operations in the same order, so a device reproduces the CPU's bits; tests/dynamics/
 // test_kernel_arithmetic.cpp checks these functions against the CPU kernels bit for bit, and the
 // gpu test label (tests/gpu) checks the device against these functions.
 //

@@ -27,6 +27,14 @@ HMFNET_INLINE void store(double* x, const V& v) {
   std::memcpy(x, &v, sizeof v);
 }
 
+// x in every lane, by copies (V{} + x would turn -0.0 into +0.0).
+template <typename V>
+HMFNET_INLINE V broadcast(double x) {
+  V v;
+  for (std::size_t l = 0; l < sizeof(V) / sizeof(double); ++l) v[l] = x;
+  return v;
+}
+
 // `n` consecutive cells with the coupling factors ck[i] (a lane's c_i K_b for each of the
 // Kicks kicks) in V and ck_one[i] for one cell: the vector body in V, the rest one cell at a time,
 // each cell's kicks then its drift.
@@ -63,7 +71,7 @@ HMFNET_INLINE void rows_with(const KickDriftCells& cells, const KickDriftCoeffic
     V ck[Kicks];
     for (std::size_t i = 0; i < Kicks; ++i) {
       ck_one[i] = c.kicks[i] * cells.K[0];
-      ck[i] = V{} + ck_one[i];
+      ck[i] = broadcast<V>(ck_one[i]);
     }
     cells_with<V, Kicks, Drift>(cells.p + r0, Drift ? theta + r0 : nullptr, cells.g + r0, ck,
                                 ck_one, c.drift, r1 - r0);

@@ -50,11 +50,12 @@ void in_team(Body&& body) {
   if (error) std::rethrow_exception(error);
 }
 
-/// `f()` on the master thread, then a barrier (so the whole team sees what it wrote). Outside a
-/// region it is a plain call and its exceptions propagate. After a failure in this team, later
-/// calls skip `f()` (no further MPI exchange after a failed one).
+/// `f()` on the master thread alone, with no barrier: for work whose results only the master
+/// reads. Outside a region it is a plain call and its exceptions propagate; inside, the first
+/// exception is kept for `in_team` to rethrow, and after a failure in this team later calls skip
+/// `f()` (no further MPI exchange after a failed one).
 template <typename F>
-void on_master(F&& f) {
+void master_only(F&& f) {
   if (outside_team()) {
     std::forward<F>(f)();
     return;
@@ -70,6 +71,12 @@ void on_master(F&& f) {
       if (!*team_detail::t_error) *team_detail::t_error = std::current_exception();
     }
   }
+}
+
+/// master_only, then a barrier (so the whole team sees what `f()` wrote).
+template <typename F>
+void on_master(F&& f) {
+  master_only(std::forward<F>(f));
 #pragma omp barrier
 }
 

@@ -8,6 +8,7 @@
 
 #include "dynamics/integrator.hpp"
 #include "dynamics/network_force.hpp"
+#include "dynamics/rank_one_force.hpp"
 #include "dynamics/thread_choice.hpp"
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
@@ -168,34 +169,34 @@ TEST_CASE("Kick and kick-drift of one replica take the general loop's operations
   }
 }
 
-TEST_CASE("steps() gives the bits of step() after step(), with each step's sums to after_step",
-          "[integrator]") {
-  // steps() joins each step's closing kick to the next step's first pass; the same operations
-  // on every cell in the same order, so theta, p, g and the per-step order sums must equal those
-  // of single steps bit for bit, for every method, replica count and thread count.
-  Fixture fx;
-  const std::vector<InitialCondition> three{{6.0, 1.0, 7}, {5.0, 0.5, 8}, {4.0, 2.0, 9}};
+namespace {
+
+// steps() joins each step's closing kick to the next step's first pass and runs all steps in one
+// team; the same operations on every cell in the same order, so theta, p, g, every step's order
+// sums and the evaluation count must equal those of single steps bit for bit, for every method,
+// step count and thread count.
+void check_steps_against_step(CouplingForce& force, NodeIndex first_row, NodeIndex rows,
+                              std::size_t replicas) {
+  const std::vector<InitialCondition> five{
+      {6.0, 1.0, 7}, {5.0, 0.5, 8}, {4.0, 2.0, 9}, {0.0, 0.3, 10}, {-1.0, 0.7, 11}};
+  const std::vector<InitialCondition> ics(five.begin(), five.begin() + static_cast<long>(replicas));
+  const std::vector<double> K(replicas, 100.0);
   for (const std::string name : {"leapfrog", "yoshida4", "blanes_moan", "rk4"}) {
-    for (const std::size_t replicas : {std::size_t{1}, std::size_t{3}}) {
+    for (const int n : {0, 1, 23}) {
       for (const int threads : {1, 2}) {
-        INFO(name << ", " << replicas << " replicas, " << threads << " threads");
+        INFO(name << ", " << replicas << " replicas, " << n << " steps, " << threads << " threads");
         const ThreadCountScope scope(threads);
         const auto method = make_integrator(name);
-        const std::vector<InitialCondition> ics(three.begin(),
-                                                three.begin() + static_cast<long>(replicas));
-        const std::vector<double> K(replicas, 100.0);
-        const int n = 23;
-        RotorState one =
-            initial_state(fx.distributed.first_row(), fx.distributed.local_size(), ics);
+        RotorState one = initial_state(first_row, rows, ics);
         RotorState many = one;
-        ForceEvaluation f_one(fx.force);
+        ForceEvaluation f_one(force);
         f_one.update(one);
         std::vector<double> order_one;
         for (int k = 0; k < n; ++k) {
           method->step(one, 0.01, K, f_one);
           order_one.insert(order_one.end(), f_one.sums().order.begin(), f_one.sums().order.end());
         }
-        ForceEvaluation f_many(fx.force);
+        ForceEvaluation f_many(force);
         f_many.update(many);
         std::vector<double> order_many;
         method->steps(many, 0.01, K, f_many, n, [&] {
@@ -208,6 +209,26 @@ TEST_CASE("steps() gives the bits of step() after step(), with each step's sums 
         CHECK(order_many == order_one);
         CHECK(f_many.count() == f_one.count());
       }
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("steps() gives the bits of step() after step(), with each step's sums to after_step",
+          "[integrator]") {
+  SECTION("the sparse force, ER N = 600") {
+    Fixture fx;
+    for (const std::size_t replicas : {std::size_t{1}, std::size_t{3}}) {
+      check_steps_against_step(fx.force, fx.distributed.first_row(), fx.distributed.local_size(),
+                               replicas);
+    }
+  }
+  SECTION("the rank-one force, K_N N = 3000 (one replica: several blocks of cells a thread)") {
+    const NodeIndex n = 3000;
+    RankOneForce force(RankOneStructure{std::vector<double>(n, 1.0), false}, 0, n);
+    for (const std::size_t replicas : {std::size_t{1}, std::size_t{5}}) {
+      check_steps_against_step(force, 0, n, replicas);
     }
   }
 }
