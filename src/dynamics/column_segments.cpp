@@ -73,10 +73,14 @@ std::size_t available_memory_bytes() {
   return SIZE_MAX;
 }
 
-std::size_t segmented_bytes(EdgeOffset nnz, NodeIndex rows, int segments,
+std::size_t segment_index_bytes(NodeIndex width) {
+  return width <= k_narrow_segment_columns ? sizeof(std::uint16_t) : sizeof(NodeIndex);
+}
+
+std::size_t segmented_bytes(EdgeOffset nnz, NodeIndex rows, int segments, NodeIndex width,
                             std::size_t record_bytes) {
   const auto n = static_cast<std::size_t>(rows);
-  return static_cast<std::size_t>(nnz) * sizeof(NodeIndex) +
+  return static_cast<std::size_t>(nnz) * segment_index_bytes(width) +
          static_cast<std::size_t>(segments) * (n + 1) * sizeof(std::uint32_t) +
          n * 4 * record_bytes + n * sizeof(std::uint32_t);
 }
@@ -91,15 +95,17 @@ NodeIndex automatic_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex r
       std::floor(static_cast<double>(nnz) / static_cast<double>(rows) / k_min_entries_per_segment);
   const double segments = std::min(by_cache, by_entries);
   if (segments < 2) return k_unsegmented;
-  if (segmented_bytes(nnz, rows, static_cast<int>(segments), record_bytes) > memory_bytes / 2) {
+  const auto width = static_cast<NodeIndex>(std::ceil(static_cast<double>(columns) / segments));
+  if (segmented_bytes(nnz, rows, static_cast<int>(segments), width, record_bytes) >
+      memory_bytes / 2) {
     return k_unsegmented;
   }
-  return static_cast<NodeIndex>(std::ceil(static_cast<double>(columns) / segments));
+  return width;
 }
 
 ColumnSegments::ColumnSegments(const std::vector<EdgeOffset>& row_ptr,
                                const std::vector<NodeIndex>& cols, NodeIndex columns,
-                               NodeIndex width) {
+                               NodeIndex width, bool allow_narrow) {
   const NodeIndex rows = row_ptr.empty() ? 0 : static_cast<NodeIndex>(row_ptr.size() - 1);
   const NodeIndex count = width >= columns ? 1 : (columns - 1) / width + 1;
   if (count <= 1 || rows == 0) return;
@@ -138,20 +144,34 @@ ColumnSegments::ColumnSegments(const std::vector<EdgeOffset>& row_ptr,
     segment_start[s + 1] = segment_start[s] + total;
   }
   m_count = count;
+  m_width = width;
+  m_narrow = allow_narrow && width <= k_narrow_segment_columns;
   m_rows = nrows;
   m_segment_start = std::move(segment_start);
   m_run_start = std::move(run);
-  const auto& starts = m_run_start;
-  m_cols.resize(cols.size() + k_run_padding);  // zeros: column 0, a readable record
+  // Zeros past the end: local index 0 of the last segment, a readable record.
+  if (m_narrow) {
+    m_cols16.resize(cols.size() + k_run_padding);
+    copy_local(row_ptr, cols, m_cols16.data());
+  } else {
+    m_cols32.resize(cols.size() + k_run_padding);
+    copy_local(row_ptr, cols, m_cols32.data());
+  }
+}
+
+template <typename I>
+void ColumnSegments::copy_local(const std::vector<EdgeOffset>& row_ptr,
+                                const std::vector<NodeIndex>& cols, I* out) const {
+  const auto rows = static_cast<NodeIndex>(m_rows);
 #pragma omp parallel for schedule(static)
   for (NodeIndex r = 0; r < rows; ++r) {
-    auto k = row(r).first;
-    for (std::size_t s = 0; s < static_cast<std::size_t>(count); ++s) {
-      const std::size_t first = starts[at(s, nrows, r)];
-      const auto length = static_cast<std::ptrdiff_t>(starts[at(s, nrows, r) + 1] - first);
-      std::copy(k, k + length,
-                m_cols.begin() + static_cast<std::ptrdiff_t>(m_segment_start[s] + first));
-      k += length;
+    EdgeOffset k = row_ptr[static_cast<std::size_t>(r)];
+    for (int s = 0; s < m_count; ++s) {
+      const std::uint32_t* starts = run_start(s);
+      I* to = out + m_segment_start[static_cast<std::size_t>(s)];
+      const NodeIndex base = first_column(s);
+      for (std::uint32_t j = starts[r]; j < starts[r + 1]; ++j, ++k)
+        to[j] = static_cast<I>(cols[static_cast<std::size_t>(k)] - base);
     }
   }
 }

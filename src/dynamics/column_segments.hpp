@@ -40,17 +40,19 @@ inline constexpr NodeIndex k_unsegmented = INT32_MAX;
 /// free pages (sysconf), else no limit known (the largest size_t).
 std::size_t available_memory_bytes();
 
-/// What segmenting `rows` rows of `nnz` entries into `segments` segments adds to the force:
-/// the column index copy (nnz x 4 B), the run starts (segments x (rows + 1) x 4 B), the carried
-/// partial sums (rows x 4 x record_bytes) and the row cursors (rows x 4 B).
-std::size_t segmented_bytes(EdgeOffset nnz, NodeIndex rows, int segments, std::size_t record_bytes);
+/// What segmenting `rows` rows of `nnz` entries into `segments` segments of `width` columns adds
+/// to the force: the column index copy (nnz x segment_index_bytes(width)), the run starts
+/// (segments x (rows + 1) x 4 B), the carried partial sums (rows x 4 x record_bytes) and the
+/// row cursors (rows x 4 B).
+std::size_t segmented_bytes(EdgeOffset nnz, NodeIndex rows, int segments, NodeIndex width,
+                            std::size_t record_bytes);
 
 /// The rule: the whole column space (one segment) when the table, columns x record_bytes, fits
 /// in `l2_bytes`; else as many segments as slices of half the L2 (the other half holds the
 /// streams of column indices, run starts and carried sums; 1 MiB slices measured faster than
 /// 512 KiB and 2 MiB ones on the 2 MiB L2 of the Intel Xeon), but no more than leave
 /// k_min_entries_per_segment entries per row and segment, and one segment when that leaves
-/// fewer than two, or when the segments' memory (segmented_bytes: +980 MB at ER N = 10^6,
+/// fewer than two, or when the segments' memory (segmented_bytes: +780 MB at ER N = 10^6,
 /// degree 100, float64, 8 replicas) exceeds half of `memory_bytes`: a network that runs
 /// unblocked is never pushed out of memory for the speed-up. record_bytes = 2 x replicas x
 /// sizeof(the table's type).
@@ -58,12 +60,26 @@ NodeIndex automatic_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex r
                                   std::size_t record_bytes, std::size_t l2_bytes,
                                   std::size_t memory_bytes);
 
+/// Segments of at most this many columns keep their column indices in 16 bits, relative to the
+/// segment's first column: half the copy's bytes (200 MB instead of 400 at ER N = 10^6, degree
+/// 100), and every width the automatic rule gives at N = 10^6, degree 100 (<= 65,536 columns:
+/// slices of 1 MiB hold 65,536 float64 records of one replica, and the d / 6 cap leaves 62,500).
+inline constexpr NodeIndex k_narrow_segment_columns = NodeIndex{1} << 16;
+
+/// The bytes of one stored column index of segments `width` columns wide.
+std::size_t segment_index_bytes(NodeIndex width);
+
 /// The rows cut by columns, as the paper stores them: one CSR per segment (its column indices
-/// in one array, segment after segment, and per segment the start of each row's run). Memory:
-/// (nnz + k_run_padding) x 4 bytes (one more column index array; the padding: segment_runs.hpp)
-/// plus segments x (rows + 1) x 4 bytes (at most nnz x 4 / k_min_entries_per_segment under the
-/// automatic rule, a sixth of the index array). The weights are not copied: a row's run in a
-/// segment continues where its run in the previous segment ended.
+/// in one array, segment after segment, and per segment the start of each row's run). The
+/// indices are relative to the segment's first column (first_column), in 16 bits where the
+/// segments are at most k_narrow_segment_columns wide (narrow()), else in 32. Memory:
+/// (nnz + k_run_padding) x 2 or 4 bytes (one more column index array; the padding:
+/// segment_runs.hpp) plus segments x (rows + 1) x 4 bytes (at most nnz x 4 /
+/// k_min_entries_per_segment under the automatic rule). The weights are not copied: a row's run
+/// in a segment continues where its run in the previous segment ended. (Reading each run from
+/// the network's own CSR instead of a copy saves the array and ran 0.20x as fast at ER N = 10^6,
+/// degree 100, one replica: one cache line fetched per row and segment, at strides the prefetcher
+/// cannot follow; docs/performance.md.)
 class ColumnSegments {
  public:
   /// One segment: the unblocked kernel.
@@ -71,29 +87,55 @@ class ColumnSegments {
 
   /// Cuts [0, columns) into segments of `width` columns (width >= 1). Rows whose columns are not
   /// ascending cannot be cut (a segment's entries would not be contiguous in the row), nor can a
-  /// segment of 2^32 or more entries: then one segment. Runs on its own threads (outside a team).
+  /// segment of 2^32 or more entries: then one segment. `allow_narrow` false keeps 32-bit
+  /// indices whatever the width (the tests compare both). Runs on its own threads (outside a
+  /// team).
   ColumnSegments(const std::vector<EdgeOffset>& row_ptr, const std::vector<NodeIndex>& cols,
-                 NodeIndex columns, NodeIndex width);
+                 NodeIndex columns, NodeIndex width, bool allow_narrow = true);
 
   int count() const { return m_count; }
-  /// Row r's run in segment s is cols(s)[run_start(s)[r]] .. cols(s)[run_start(s)[r + 1] - 1].
+  /// Whether the indices are 16-bit (cols<std::uint16_t>) or 32-bit (cols<NodeIndex>).
+  bool narrow() const { return m_narrow; }
+  /// The global column of segment s's local index 0.
+  NodeIndex first_column(int s) const { return static_cast<NodeIndex>(s) * m_width; }
+  /// Row r's run in segment s is cols<I>(s)[run_start(s)[r]] .. cols<I>(s)[run_start(s)[r + 1]
+  /// - 1], each index relative to first_column(s); I is std::uint16_t where narrow(), else
+  /// NodeIndex.
   const std::uint32_t* run_start(int s) const {
     return m_run_start.data() + static_cast<std::size_t>(s) * (m_rows + 1);
   }
-  const NodeIndex* cols(int s) const {
-    return m_cols.data() + m_segment_start[static_cast<std::size_t>(s)];
-  }
+  template <typename I>
+  const I* cols(int s) const;
   std::size_t bytes() const {
-    return m_cols.size() * sizeof(NodeIndex) + m_run_start.size() * sizeof(std::uint32_t) +
+    return m_cols16.size() * sizeof(std::uint16_t) + m_cols32.size() * sizeof(NodeIndex) +
+           m_run_start.size() * sizeof(std::uint32_t) +
            m_segment_start.size() * sizeof(std::size_t);
   }
 
  private:
+  // Each row's runs into `out`, segment by segment, relative to the segment's first column.
+  template <typename I>
+  void copy_local(const std::vector<EdgeOffset>& row_ptr, const std::vector<NodeIndex>& cols,
+                  I* out) const;
+
   int m_count = 1;
+  NodeIndex m_width = 0;
+  bool m_narrow = false;
   std::size_t m_rows = 0;
   std::vector<std::size_t> m_segment_start;  // count + 1: where each segment's entries begin
   std::vector<std::uint32_t> m_run_start;    // count x (rows + 1), relative to the segment
-  std::vector<NodeIndex> m_cols;             // nnz, segment-major
+  std::vector<std::uint16_t> m_cols16;       // nnz, segment-major, where narrow()
+  std::vector<NodeIndex> m_cols32;           // nnz, segment-major, otherwise
 };
+
+template <>
+inline const std::uint16_t* ColumnSegments::cols<std::uint16_t>(int s) const {
+  return m_cols16.data() + m_segment_start[static_cast<std::size_t>(s)];
+}
+
+template <>
+inline const NodeIndex* ColumnSegments::cols<NodeIndex>(int s) const {
+  return m_cols32.data() + m_segment_start[static_cast<std::size_t>(s)];
+}
 
 }  // namespace hmfnet

@@ -177,7 +177,8 @@ inline void finish_row(const RowKernelArgs<T>& a, NodeIndex r, const T* p, std::
 
 // Rows walked once per segment, each thread the same block of rows in every segment, so the
 // carry needs no barrier between segments; one barrier at the end, as the unblocked loop has.
-template <typename T, int B, bool Weighted>
+// I: the segments' index type (ColumnSegments::narrow()).
+template <typename T, int B, bool Weighted, typename I>
 void segmented_rows_kernel(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, NodeIndex rows,
                            int runtime_b) {
   const int nb = B > 0 ? B : runtime_b;
@@ -188,18 +189,20 @@ void segmented_rows_kernel(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, 
   const auto r0 = static_cast<NodeIndex>(rows * thread / threads);
   const auto r1 = static_cast<NodeIndex>(rows * (thread + 1) / threads);
   for (int seg = 0; seg < count; ++seg) {
-    const SegmentPass<T> pass{a.row_ptr,
-                              sa.segments->run_start(seg),
-                              sa.segments->cols(seg),
-                              a.column_cs,
-                              sa.carry,
-                              sa.cursor,
-                              seg == 0,
-                              seg + 1 == count};
+    const T* table = a.column_cs + static_cast<std::ptrdiff_t>(record) *
+                                       static_cast<std::ptrdiff_t>(sa.segments->first_column(seg));
+    const SegmentPass<T, I> pass{a.row_ptr,
+                                 sa.segments->run_start(seg),
+                                 sa.segments->template cols<I>(seg),
+                                 table,
+                                 sa.carry,
+                                 sa.cursor,
+                                 seg == 0,
+                                 seg + 1 == count};
     if constexpr (!Weighted && (B == 1 || B == 2)) {
       add_segment_runs(pass, nb, r0, r1, true);
     } else {
-      scalar_segment_runs<T, B, Weighted>(pass, a.weights, nb, r0, r1);
+      scalar_segment_runs<T, B, Weighted, I>(pass, a.weights, nb, r0, r1);
     }
   }
   for (NodeIndex r = r0; r < r1; ++r)
@@ -207,25 +210,35 @@ void segmented_rows_kernel(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, 
 #pragma omp barrier
 }
 
-template <typename T, bool Weighted>
+template <typename T, bool Weighted, typename I>
 void dispatch_segmented(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, NodeIndex rows,
                         int b) {
   switch (b) {
     case 1:
-      segmented_rows_kernel<T, 1, Weighted>(a, sa, rows, b);
+      segmented_rows_kernel<T, 1, Weighted, I>(a, sa, rows, b);
       break;
     case 2:
-      segmented_rows_kernel<T, 2, Weighted>(a, sa, rows, b);
+      segmented_rows_kernel<T, 2, Weighted, I>(a, sa, rows, b);
       break;
     case 4:
-      segmented_rows_kernel<T, 4, Weighted>(a, sa, rows, b);
+      segmented_rows_kernel<T, 4, Weighted, I>(a, sa, rows, b);
       break;
     case 8:
-      segmented_rows_kernel<T, 8, Weighted>(a, sa, rows, b);
+      segmented_rows_kernel<T, 8, Weighted, I>(a, sa, rows, b);
       break;
     default:
-      segmented_rows_kernel<T, 0, Weighted>(a, sa, rows, b);
+      segmented_rows_kernel<T, 0, Weighted, I>(a, sa, rows, b);
       break;
+  }
+}
+
+template <typename T, bool Weighted>
+void dispatch_segmented_index(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, NodeIndex rows,
+                              int b) {
+  if (sa.segments->narrow()) {
+    dispatch_segmented<T, Weighted, std::uint16_t>(a, sa, rows, b);
+  } else {
+    dispatch_segmented<T, Weighted, NodeIndex>(a, sa, rows, b);
   }
 }
 
@@ -266,9 +279,9 @@ template <typename T>
 [[gnu::noinline]] void run_segmented_kernel(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa,
                                             NodeIndex rows, int b) {
   if (a.weights == nullptr) {
-    dispatch_segmented<T, false>(a, sa, rows, b);
+    dispatch_segmented_index<T, false>(a, sa, rows, b);
   } else {
-    dispatch_segmented<T, true>(a, sa, rows, b);
+    dispatch_segmented_index<T, true>(a, sa, rows, b);
   }
 }
 

@@ -21,8 +21,8 @@ struct Run {
   EdgeOffset split;  // the run's entries before the row's last d mod 4
 };
 
-template <typename T>
-inline Run run_of(const SegmentPass<T>& pass, NodeIndex r) {
+template <typename T, typename I>
+inline Run run_of(const SegmentPass<T, I>& pass, NodeIndex r) {
   const EdgeOffset place = pass.first ? 0 : pass.cursor[r];
   const EdgeOffset n = pass.run[r + 1] - pass.run[r];
   const EdgeOffset full = (pass.row_ptr[r + 1] - pass.row_ptr[r]) / 4 * 4;
@@ -49,8 +49,8 @@ HMFNET_AVX2 inline __m256d add_bits(__m256d acc, __m256d v, float /*type*/) {
 
 // The four records of a block, partial j's in the j-th quarter of the registers (all of a
 // register's 64-bit lanes from one record when a record fills it).
-template <typename T, int B>
-HMFNET_AVX2 inline void load_block(const char* table, const NodeIndex* const at[4], EdgeOffset i,
+template <typename T, int B, typename I>
+HMFNET_AVX2 inline void load_block(const char* table, const I* const at[4], EdgeOffset i,
                                    __m256d v[k_registers<T, B>]) {
   constexpr std::size_t bytes = k_record_bytes<T, B>;
   const char* q[4];
@@ -84,13 +84,13 @@ HMFNET_AVX2 inline void spread_mask(__m256i valid, __m256d m[k_registers<T, B>])
 // A run's entries before `split` into the partials at p: block by block, slot j of the block at
 // i taking entry i + (j - place) mod 4 where that is before split, else +0.0 (the slots' loads
 // read at most seven entries past the run: k_run_padding).
-template <typename T, int B>
-HMFNET_AVX2 void add_blocks(T* p, const char* table, const NodeIndex* cols, const Run& run) {
+template <typename T, int B, typename I>
+HMFNET_AVX2 void add_blocks(T* p, const char* table, const I* cols, const Run& run) {
   constexpr std::size_t regs = k_registers<T, B>;
   __m256d acc[regs];
   for (std::size_t k = 0; k < regs; ++k)
     acc[k] = _mm256_loadu_pd(reinterpret_cast<const double*>(p) + 4 * k);
-  const NodeIndex* at[4];
+  const I* at[4];
   for (int j = 0; j < 4; ++j) at[j] = cols + ((j - run.place) & 3);
   // Slot j of the block at i is valid while i < split - (j - place) mod 4. Formed in registers:
   // four scalar stores read back as one vector stalled every run on the failed store forwarding.
@@ -104,7 +104,7 @@ HMFNET_AVX2 void add_blocks(T* p, const char* table, const NodeIndex* cols, cons
   do {
     for (int half = 0; half < 2; ++half, i += 4) {
       __m256d v[regs], m[regs];
-      load_block<T, B>(table, at, i, v);
+      load_block<T, B, I>(table, at, i, v);
       spread_mask<T, B>(_mm256_cmpgt_epi64(limits, _mm256_set1_epi64x(i)), m);
       for (std::size_t k = 0; k < regs; ++k)
         acc[k] = add_bits(acc[k], _mm256_and_pd(v[k], m[k]), T{});
@@ -114,16 +114,16 @@ HMFNET_AVX2 void add_blocks(T* p, const char* table, const NodeIndex* cols, cons
     _mm256_storeu_pd(reinterpret_cast<double*>(p) + 4 * k, acc[k]);
 }
 
-template <typename T, int B>
-HMFNET_AVX2 void vector_runs(const SegmentPass<T>& pass, NodeIndex r0, NodeIndex r1) {
+template <typename T, int B, typename I>
+HMFNET_AVX2 void vector_runs(const SegmentPass<T, I>& pass, NodeIndex r0, NodeIndex r1) {
   constexpr std::size_t stride = 8 * static_cast<std::size_t>(B);
   const auto* table = reinterpret_cast<const char*>(pass.table);
   for (NodeIndex r = r0; r < r1; ++r) {
     T* p = pass.carry + static_cast<std::size_t>(r) * stride;
     if (pass.first) std::memset(p, 0, stride * sizeof(T));
     const Run run = run_of(pass, r);
-    const NodeIndex* cols = pass.cols + pass.run[r];
-    if (run.split > 0) add_blocks<T, B>(p, table, cols, run);
+    const I* cols = pass.cols + pass.run[r];
+    if (run.split > 0) add_blocks<T, B, I>(p, table, cols, run);
     constexpr auto record = std::ptrdiff_t{2} * B;
     for (EdgeOffset e = run.split; e < run.n; ++e)  // the row's last d mod 4: partial 0
       add_record(p, pass.table + record * cols[e], T(1), 2 * B);
@@ -133,19 +133,19 @@ HMFNET_AVX2 void vector_runs(const SegmentPass<T>& pass, NodeIndex r0, NodeIndex
 #undef HMFNET_AVX2
 #endif
 
-template <typename T, int B>
-void runs(const SegmentPass<T>& pass, NodeIndex r0, NodeIndex r1, bool vector) {
+template <typename T, int B, typename I>
+void runs(const SegmentPass<T, I>& pass, NodeIndex r0, NodeIndex r1, bool vector) {
 #if defined(HMFNET_SEGMENT_RUNS_AVX2)
   if constexpr (k_record_bytes<T, B> <= 16) {
     if (vector && segment_runs_vectorised<T>(B)) {
-      vector_runs<T, B>(pass, r0, r1);
+      vector_runs<T, B, I>(pass, r0, r1);
       return;
     }
   }
 #else
   static_cast<void>(vector);
 #endif
-  scalar_segment_runs<T, B, false>(pass, nullptr, B, r0, r1);
+  scalar_segment_runs<T, B, false, I>(pass, nullptr, B, r0, r1);
 }
 
 }  // namespace
@@ -164,19 +164,25 @@ bool segment_runs_vectorised(int replicas) {
 #endif
 }
 
-template <typename T>
-void add_segment_runs(const SegmentPass<T>& pass, int replicas, NodeIndex r0, NodeIndex r1,
+template <typename T, typename I>
+void add_segment_runs(const SegmentPass<T, I>& pass, int replicas, NodeIndex r0, NodeIndex r1,
                       bool vector) {
   if (replicas == 2) {
-    runs<T, 2>(pass, r0, r1, vector);
+    runs<T, 2, I>(pass, r0, r1, vector);
   } else {
-    runs<T, 1>(pass, r0, r1, vector);
+    runs<T, 1, I>(pass, r0, r1, vector);
   }
 }
 
 template bool segment_runs_vectorised<double>(int);
 template bool segment_runs_vectorised<float>(int);
-template void add_segment_runs<double>(const SegmentPass<double>&, int, NodeIndex, NodeIndex, bool);
-template void add_segment_runs<float>(const SegmentPass<float>&, int, NodeIndex, NodeIndex, bool);
+template void add_segment_runs(const SegmentPass<double, std::uint16_t>&, int, NodeIndex, NodeIndex,
+                               bool);
+template void add_segment_runs(const SegmentPass<double, NodeIndex>&, int, NodeIndex, NodeIndex,
+                               bool);
+template void add_segment_runs(const SegmentPass<float, std::uint16_t>&, int, NodeIndex, NodeIndex,
+                               bool);
+template void add_segment_runs(const SegmentPass<float, NodeIndex>&, int, NodeIndex, NodeIndex,
+                               bool);
 
 }  // namespace hmfnet

@@ -40,9 +40,9 @@ inline void add_record(T* acc, const T* q, T w, int n) {
 /// The scalar loop, for every replica count and for weighted networks: one loop whatever the
 /// run's first place (a rotation of four register accumulators with its remainder branches
 /// measured no faster, bench SegmentedStep, Intel Xeon).
-template <typename T, int B, bool Weighted>
-inline void add_run(T* p, const T* table, const NodeIndex* cols, const T* w, EdgeOffset place,
-                    EdgeOffset n, EdgeOffset full, int nb) {
+template <typename T, int B, bool Weighted, typename I>
+inline void add_run(T* p, const T* table, const I* cols, const T* w, EdgeOffset place, EdgeOffset n,
+                    EdgeOffset full, int nb) {
   const auto record = 2 * static_cast<std::ptrdiff_t>(B > 0 ? B : nb);
   const EdgeOffset split = std::clamp<EdgeOffset>(full - place, 0, n);
   for (EdgeOffset i = 0; i < n; ++i) {
@@ -56,13 +56,15 @@ inline void add_run(T* p, const T* table, const NodeIndex* cols, const T* w, Edg
 /// never added).
 inline constexpr std::size_t k_run_padding = 8;
 
-/// One segment's pass, as the kernel hands it over.
-template <typename T>
+/// One segment's pass, as the kernel hands it over; I: the type of its column indices
+/// (ColumnSegments: std::uint16_t or NodeIndex).
+template <typename T, typename I>
 struct SegmentPass {
   const EdgeOffset* row_ptr;  // the CSR: a row's degree fixes where its last d mod 4 entries begin
   const std::uint32_t* run;   // where each row's run starts in `cols` (rows + 1)
-  const NodeIndex* cols;      // the segment's column indices, k_run_padding readable after them
-  const T* table;             // the gathered [cos, sin] of every column, 2B values a column
+  const I* cols;              // the segment's column indices, k_run_padding readable after them
+  const T* table;             // the gathered [cos, sin] from the segment's first column on, 2B
+                              // values a column: cols index it
   T* carry;                   // rows x 4 partials x 2B values
   std::uint32_t* cursor;      // rows: the place in its row where each row's next run begins
   bool first;                 // the carry starts at +0.0 and the runs at place 0
@@ -72,9 +74,9 @@ struct SegmentPass {
 /// Rows [r0, r1) of one segment in the scalar loop, for every replica count (B > 0 fixed at
 /// compile time, 0: nb at run time) and for weighted rows (`weights`: the CSR's, nullptr on a
 /// 0/1 network).
-template <typename T, int B, bool Weighted>
-inline void scalar_segment_runs(const SegmentPass<T>& pass, const T* weights, int nb, NodeIndex r0,
-                                NodeIndex r1) {
+template <typename T, int B, bool Weighted, typename I>
+inline void scalar_segment_runs(const SegmentPass<T, I>& pass, const T* weights, int nb,
+                                NodeIndex r0, NodeIndex r1) {
   const std::size_t stride = 8 * static_cast<std::size_t>(B > 0 ? B : nb);
   for (NodeIndex r = r0; r < r1; ++r) {
     T* p = pass.carry + static_cast<std::size_t>(r) * stride;
@@ -83,8 +85,8 @@ inline void scalar_segment_runs(const SegmentPass<T>& pass, const T* weights, in
     const EdgeOffset place = pass.first ? 0 : pass.cursor[r];
     const EdgeOffset n = pass.run[r + 1] - pass.run[r];
     const T* w = Weighted ? weights + begin + place : nullptr;
-    add_run<T, B, Weighted>(p, pass.table, pass.cols + pass.run[r], w, place, n, degree / 4 * 4,
-                            nb);
+    add_run<T, B, Weighted, I>(p, pass.table, pass.cols + pass.run[r], w, place, n, degree / 4 * 4,
+                               nb);
     if (!pass.last) pass.cursor[r] = static_cast<std::uint32_t>(place + n);
   }
 }
@@ -99,8 +101,8 @@ bool segment_runs_vectorised(int replicas);
 /// Rows [r0, r1) of one segment on a 0/1 network, `replicas` 1 or 2 (a precondition: it runs
 /// inside a thread team, where nothing may throw): the AVX2 version where `vector` and
 /// segment_runs_vectorised, else the scalar loop; the same bits either way.
-template <typename T>
-void add_segment_runs(const SegmentPass<T>& pass, int replicas, NodeIndex r0, NodeIndex r1,
+template <typename T, typename I>
+void add_segment_runs(const SegmentPass<T, I>& pass, int replicas, NodeIndex r0, NodeIndex r1,
                       bool vector);
 
 }  // namespace hmfnet

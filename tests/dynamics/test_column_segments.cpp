@@ -90,6 +90,26 @@ TEST_CASE("segmented force equals the unblocked force bit for bit [ER N=600, wid
   }
 }
 
+TEST_CASE("16-bit and 32-bit segment indices give the unblocked force's bits [ER N=140000]",
+          "[column_segments]") {
+  // More than 2^16 columns, so that one width keeps 16-bit indices (65,536 columns: 3
+  // segments, the last local index 65,535) and the next one 32-bit (65,537: 3 segments).
+  const Network net = erdos_renyi({140'000, 3e-5, 31});
+  const DistributedNetwork d(net);
+  for (const ForcePrecision precision : {ForcePrecision::float64, ForcePrecision::float32}) {
+    for (const int replicas : {1, 2, 3}) {
+      const RotorState s = state(d, replicas);
+      const Evaluation unblocked = evaluate(d, precision, k_unsegmented, s);
+      for (const NodeIndex width : {k_narrow_segment_columns, k_narrow_segment_columns + 1}) {
+        const Evaluation cut = evaluate(d, precision, width, s);
+        INFO(to_string(precision) << ", B = " << replicas << ", width " << width);
+        CHECK(cut.segments == 3);
+        CHECK(same_bits(cut, unblocked));
+      }
+    }
+  }
+}
+
 TEST_CASE("segmented leap-frog trajectories equal unblocked ones bit for bit [ER N=400, 40 steps]",
           "[column_segments]") {
   const Network plain = erdos_renyi({400, 0.04, 23});
@@ -126,21 +146,25 @@ TEST_CASE("segment runs put every row back together in CSR order; unsorted rows 
   // Rows {0, 2, 5, 9}, {}, {1, 3, 4, 8, 9}, {7}; 10 columns in segments of 3.
   const std::vector<EdgeOffset> row_ptr{0, 4, 4, 9, 10};
   const std::vector<NodeIndex> cols{0, 2, 5, 9, 1, 3, 4, 8, 9, 7};
-  const ColumnSegments cut(row_ptr, cols, 10, 3);
-  REQUIRE(cut.count() == 4);
-  for (NodeIndex r = 0; r < 4; ++r) {
-    std::vector<NodeIndex> joined;
-    for (int s = 0; s < cut.count(); ++s) {
-      for (std::uint32_t k = cut.run_start(s)[r]; k < cut.run_start(s)[r + 1]; ++k) {
-        const NodeIndex c = cut.cols(s)[k];
-        CHECK(c / 3 == s);  // the run lies in its segment's columns
-        joined.push_back(c);
+  for (const bool allow_narrow : {true, false}) {
+    const ColumnSegments cut(row_ptr, cols, 10, 3, allow_narrow);
+    REQUIRE(cut.count() == 4);
+    CHECK(cut.narrow() == allow_narrow);
+    for (NodeIndex r = 0; r < 4; ++r) {
+      std::vector<NodeIndex> joined;
+      for (int s = 0; s < cut.count(); ++s) {
+        for (std::uint32_t k = cut.run_start(s)[r]; k < cut.run_start(s)[r + 1]; ++k) {
+          const NodeIndex local =
+              allow_narrow ? NodeIndex{cut.cols<std::uint16_t>(s)[k]} : cut.cols<NodeIndex>(s)[k];
+          CHECK(local < 3);  // the run lies in its segment's columns
+          joined.push_back(cut.first_column(s) + local);
+        }
       }
+      INFO("row " << r << (allow_narrow ? ", 16-bit" : ", 32-bit"));
+      CHECK(joined ==
+            std::vector<NodeIndex>(cols.begin() + row_ptr[static_cast<std::size_t>(r)],
+                                   cols.begin() + row_ptr[static_cast<std::size_t>(r) + 1]));
     }
-    INFO("row " << r);
-    CHECK(joined ==
-          std::vector<NodeIndex>(cols.begin() + row_ptr[static_cast<std::size_t>(r)],
-                                 cols.begin() + row_ptr[static_cast<std::size_t>(r) + 1]));
   }
   const std::vector<NodeIndex> unsorted{0, 5, 2, 9, 1, 3, 4, 8, 9, 7};
   CHECK(ColumnSegments(row_ptr, unsorted, 10, 3).count() == 1);
@@ -160,10 +184,14 @@ TEST_CASE("automatic segment width: unblocked while the table fits in L2, half a
   // Degree 10: fewer than two segments of 6 entries: unblocked.
   CHECK(automatic_segment_width(1'000'000, 10'000'000, 1'000'000, 16, l2, plenty) == k_unsegmented);
   CHECK(l2_cache_bytes() > 0);
-  // The segments' memory at N = 10^6, degree 100, float64, one replica: 400 MB of column
-  // indices, 64 MB of run starts (16 segments), 64 MB carried, 4 MB of cursors.
-  const std::size_t extra = segmented_bytes(100'000'000, 1'000'000, 16, 16);
-  CHECK(extra == 400'000'000 + 16 * 1'000'001 * 4 + 64'000'000 + 4'000'000);
+  // The segments' memory at N = 10^6, degree 100, float64, one replica: 200 MB of 16-bit
+  // column indices (62,500 columns a segment), 64 MB of run starts (16 segments), 64 MB
+  // carried, 4 MB of cursors; segments wider than 2^16 columns keep 32-bit indices.
+  const std::size_t extra = segmented_bytes(100'000'000, 1'000'000, 16, 62'500, 16);
+  CHECK(extra == 200'000'000 + 16 * 1'000'001 * 4 + 64'000'000 + 4'000'000);
+  CHECK(segmented_bytes(100'000'000, 1'000'000, 16, 65'537, 16) == extra + 200'000'000);
+  CHECK(segment_index_bytes(65'536) == 2);
+  CHECK(segment_index_bytes(65'537) == 4);
   // Segmented only while that leaves half the available memory.
   CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 16, l2, 2 * extra) == 62'500);
   CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 16, l2, 2 * extra - 1) ==

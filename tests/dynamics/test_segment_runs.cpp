@@ -59,8 +59,9 @@ bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
 }
 
-// Both versions over every segment of `cut`, the rows split at `split_row` into two calls.
-template <typename T>
+// Both versions over every segment of `cut` (indices of type I), the rows split at `split_row`
+// into two calls.
+template <typename T, typename I>
 void compare(const Rows& rows, const ColumnSegments& cut, const std::vector<T>& t, int replicas,
              NodeIndex split_row) {
   const auto n = static_cast<NodeIndex>(rows.row_ptr.size() - 1);
@@ -70,10 +71,16 @@ void compare(const Rows& rows, const ColumnSegments& cut, const std::vector<T>& 
       cursor_scalar = cursor_vector;
   for (int s = 0; s < cut.count(); ++s) {
     const bool first = s == 0, last = s + 1 == cut.count();
-    const SegmentPass<T> vector_pass{
-        rows.row_ptr.data(), cut.run_start(s),     cut.cols(s), t.data(),
-        carry_vector.data(), cursor_vector.data(), first,       last};
-    SegmentPass<T> scalar_pass = vector_pass;
+    const T* table = t.data() + 2 * static_cast<std::ptrdiff_t>(replicas) * cut.first_column(s);
+    const SegmentPass<T, I> vector_pass{rows.row_ptr.data(),
+                                        cut.run_start(s),
+                                        cut.template cols<I>(s),
+                                        table,
+                                        carry_vector.data(),
+                                        cursor_vector.data(),
+                                        first,
+                                        last};
+    SegmentPass<T, I> scalar_pass = vector_pass;
     scalar_pass.carry = carry_scalar.data();
     scalar_pass.cursor = cursor_scalar.data();
     add_segment_runs(vector_pass, replicas, 0, split_row, true);
@@ -93,12 +100,19 @@ TEST_CASE("the AVX2 segment runs add as the scalar loop does, bit for bit", "[se
   const Rows rows = random_rows(n, columns, 11);
   if (!segment_runs_vectorised<double>(1)) WARN("no AVX2 here: scalar against scalar");
   for (const NodeIndex width : {1, 40, 97}) {  // 240 segments (most runs empty), 6 and 3
-    const ColumnSegments cut(rows.row_ptr, rows.cols, columns, width);
-    REQUIRE(cut.count() == (columns - 1) / width + 1);
+    const ColumnSegments narrow(rows.row_ptr, rows.cols, columns, width),
+        wide(rows.row_ptr, rows.cols, columns, width, false);
+    REQUIRE(narrow.count() == (columns - 1) / width + 1);
+    REQUIRE(narrow.narrow());
+    REQUIRE(!wide.narrow());
     for (const int replicas : {1, 2}) {
       for (const NodeIndex split_row : {0, 1, 151}) {
-        compare(rows, cut, table<double>(columns, replicas, 5), replicas, split_row);
-        compare(rows, cut, table<float>(columns, replicas, 6), replicas, split_row);
+        compare<double, std::uint16_t>(rows, narrow, table<double>(columns, replicas, 5), replicas,
+                                       split_row);
+        compare<float, std::uint16_t>(rows, narrow, table<float>(columns, replicas, 6), replicas,
+                                      split_row);
+        compare<double, NodeIndex>(rows, wide, table<double>(columns, replicas, 5), replicas,
+                                   split_row);
       }
     }
   }
@@ -118,8 +132,14 @@ TEST_CASE("the AVX2 segment runs mask the slots past a run's end", "[segment_run
   const std::vector<double> ones(32, 1.0);
   std::vector<double> carry(16, 0.0);
   std::vector<std::uint32_t> cursor(2);
-  const SegmentPass<double> pass{rows.row_ptr.data(), cut.run_start(0), cut.cols(0), ones.data(),
-                                 carry.data(),        cursor.data(),    true,        false};
+  const SegmentPass<double, std::uint16_t> pass{rows.row_ptr.data(),
+                                                cut.run_start(0),
+                                                cut.cols<std::uint16_t>(0),
+                                                ones.data(),
+                                                carry.data(),
+                                                cursor.data(),
+                                                true,
+                                                false};
   add_segment_runs(pass, 1, 0, 1, true);
   double cos_sum = 0;
   for (std::size_t j = 0; j < 4; ++j) cos_sum += carry[2 * j];
