@@ -80,9 +80,10 @@ std::size_t segment_index_bytes(NodeIndex width) {
 std::size_t segmented_bytes(EdgeOffset nnz, NodeIndex rows, int segments, NodeIndex width,
                             std::size_t record_bytes) {
   const auto n = static_cast<std::size_t>(rows);
+  const auto panel = static_cast<std::size_t>(carried_rows(rows));
   return static_cast<std::size_t>(nnz) * segment_index_bytes(width) +
          static_cast<std::size_t>(segments) * (n + 1) * sizeof(std::uint32_t) +
-         n * 4 * record_bytes + n * sizeof(std::uint32_t);
+         panel * 4 * record_bytes + panel * sizeof(std::uint32_t);
 }
 
 NodeIndex automatic_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex rows,

@@ -36,14 +36,28 @@ inline constexpr double k_min_entries_per_segment = 6.0;
 inline constexpr NodeIndex k_automatic_segments = 0;
 inline constexpr NodeIndex k_unsegmented = INT32_MAX;
 
+/// The segmented kernel walks the rows in this many panels, every segment for one panel before
+/// the next, so the carried partial sums (4 x 2B values a row) are held for a quarter of the rows:
+/// 128 MB instead of 512 at ER N = 10^6, degree 100, float64, 8 replicas. Each panel reads the
+/// table's slices again; measured on the Intel Xeon (docs/performance.md, "Carried sums in four
+/// panels"; 1 thread): float64 B = 1 1.15x faster, float64 B = 8 ~0.95x, float32 ~0.95-0.97x,
+/// against one panel; panels of 1000-16,000 rows (a carry in L2) ran 1.1-2.4x slower than one.
+inline constexpr NodeIndex k_carry_panels = 4;
+
+/// The rows of one panel (the last may hold fewer): ceil(rows / k_carry_panels).
+inline NodeIndex carried_rows(NodeIndex rows) {
+  return static_cast<NodeIndex>((static_cast<std::int64_t>(rows) + k_carry_panels - 1) /
+                                k_carry_panels);
+}
+
 /// The memory this process may still take, in bytes: MemAvailable of /proc/meminfo, else the
 /// free pages (sysconf), else no limit known (the largest size_t).
 std::size_t available_memory_bytes();
 
 /// What segmenting `rows` rows of `nnz` entries into `segments` segments of `width` columns adds
 /// to the force: the column index copy (nnz x segment_index_bytes(width)), the run starts
-/// (segments x (rows + 1) x 4 B), the carried partial sums (rows x 4 x record_bytes) and the
-/// row cursors (rows x 4 B).
+/// (segments x (rows + 1) x 4 B), the carried partial sums (carried_rows(rows) x 4 x
+/// record_bytes) and the row cursors (carried_rows(rows) x 4 B).
 std::size_t segmented_bytes(EdgeOffset nnz, NodeIndex rows, int segments, NodeIndex width,
                             std::size_t record_bytes);
 

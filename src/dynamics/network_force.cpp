@@ -175,8 +175,10 @@ inline void finish_row(const RowKernelArgs<T>& a, NodeIndex r, const T* p, std::
   }
 }
 
-// Rows walked once per segment, each thread the same block of rows in every segment, so the
-// carry needs no barrier between segments; one barrier at the end, as the unblocked loop has.
+// The rows in k_carry_panels panels, each walked once per segment before the next panel, so the
+// carry holds one panel's partials (column_segments.hpp). Within a panel each thread walks the
+// same block of rows in every segment, so the carry needs no barrier between segments; one
+// barrier after each panel (the next panel reuses the carry), as the unblocked loop has one.
 // I: the segments' index type (ColumnSegments::narrow()).
 template <typename T, int B, bool Weighted, typename I>
 void segmented_rows_kernel(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, NodeIndex rows,
@@ -186,28 +188,34 @@ void segmented_rows_kernel(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, 
   const int count = sa.segments->count();
   const auto threads = static_cast<std::int64_t>(omp_get_num_threads());
   const auto thread = static_cast<std::int64_t>(omp_get_thread_num());
-  const auto r0 = static_cast<NodeIndex>(rows * thread / threads);
-  const auto r1 = static_cast<NodeIndex>(rows * (thread + 1) / threads);
-  for (int seg = 0; seg < count; ++seg) {
-    const T* table = a.column_cs + static_cast<std::ptrdiff_t>(record) *
-                                       static_cast<std::ptrdiff_t>(sa.segments->first_column(seg));
-    const SegmentPass<T, I> pass{a.row_ptr,
-                                 sa.segments->run_start(seg),
-                                 sa.segments->template cols<I>(seg),
-                                 table,
-                                 sa.carry,
-                                 sa.cursor,
-                                 seg == 0,
-                                 seg + 1 == count};
-    if constexpr (!Weighted && (B == 1 || B == 2)) {
-      add_segment_runs(pass, nb, r0, r1, true);
-    } else {
-      scalar_segment_runs<T, B, Weighted, I>(pass, a.weights, nb, r0, r1);
+  const NodeIndex panel = carried_rows(rows);
+  for (NodeIndex p0 = 0; p0 < rows; p0 += panel) {
+    const std::int64_t panel_rows = std::min(panel, rows - p0);
+    const auto r0 = static_cast<NodeIndex>(p0 + panel_rows * thread / threads);
+    const auto r1 = static_cast<NodeIndex>(p0 + panel_rows * (thread + 1) / threads);
+    for (int seg = 0; seg < count; ++seg) {
+      const T* table =
+          a.column_cs + static_cast<std::ptrdiff_t>(record) *
+                            static_cast<std::ptrdiff_t>(sa.segments->first_column(seg));
+      const SegmentPass<T, I> pass{a.row_ptr,
+                                   sa.segments->run_start(seg),
+                                   sa.segments->template cols<I>(seg),
+                                   table,
+                                   sa.carry,
+                                   sa.cursor,
+                                   seg == 0,
+                                   seg + 1 == count,
+                                   p0};
+      if constexpr (!Weighted && (B == 1 || B == 2)) {
+        add_segment_runs(pass, nb, r0, r1, true);
+      } else {
+        scalar_segment_runs<T, B, Weighted, I>(pass, a.weights, nb, r0, r1);
+      }
     }
-  }
-  for (NodeIndex r = r0; r < r1; ++r)
-    finish_row(a, r, sa.carry + static_cast<std::size_t>(r) * stride, record, nb);
+    for (NodeIndex r = r0; r < r1; ++r)
+      finish_row(a, r, sa.carry + static_cast<std::size_t>(r - p0) * stride, record, nb);
 #pragma omp barrier
+  }
 }
 
 template <typename T, bool Weighted, typename I>
@@ -352,12 +360,11 @@ void NetworkForce::prepare_segments(NodeIndex rows, int replicas) {
     m_segments = ColumnSegments(m_adjacency.row_ptr, m_adjacency.cols, m_adjacency.columns, width);
     m_segment_width = width;
   }
-  const std::size_t carried = m_segments.count() > 1 ? 8 * static_cast<std::size_t>(rows) *
-                                                           static_cast<std::size_t>(replicas)
-                                                     : 0;
+  const auto panel = static_cast<std::size_t>(m_segments.count() > 1 ? carried_rows(rows) : 0);
+  const std::size_t carried = 8 * panel * static_cast<std::size_t>(replicas);
   m_carry.resize(m_precision == ForcePrecision::float64 ? carried : 0);
   m_carry_f32.resize(m_precision == ForcePrecision::float32 ? carried : 0);
-  m_cursor.resize(carried > 0 ? static_cast<std::size_t>(rows) : 0);
+  m_cursor.resize(panel);
   // Only once all of it is in place: a throw above leaves the next call to decide again.
   m_segmented_rows = rows;
   m_segmented_replicas = replicas;

@@ -23,7 +23,7 @@ struct Run {
 
 template <typename T, typename I>
 inline Run run_of(const SegmentPass<T, I>& pass, NodeIndex r) {
-  const EdgeOffset place = pass.first ? 0 : pass.cursor[r];
+  const EdgeOffset place = pass.first ? 0 : pass.cursor[r - pass.origin];
   const EdgeOffset n = pass.run[r + 1] - pass.run[r];
   const EdgeOffset full = (pass.row_ptr[r + 1] - pass.row_ptr[r]) / 4 * 4;
   return {place, n, std::clamp<EdgeOffset>(full - place, 0, n)};
@@ -119,7 +119,7 @@ HMFNET_AVX2 void vector_runs(const SegmentPass<T, I>& pass, NodeIndex r0, NodeIn
   constexpr std::size_t stride = 8 * static_cast<std::size_t>(B);
   const auto* table = reinterpret_cast<const char*>(pass.table);
   for (NodeIndex r = r0; r < r1; ++r) {
-    T* p = pass.carry + static_cast<std::size_t>(r) * stride;
+    T* p = pass.carry + static_cast<std::size_t>(r - pass.origin) * stride;
     if (pass.first) std::memset(p, 0, stride * sizeof(T));
     const Run run = run_of(pass, r);
     const I* cols = pass.cols + pass.run[r];
@@ -127,7 +127,7 @@ HMFNET_AVX2 void vector_runs(const SegmentPass<T, I>& pass, NodeIndex r0, NodeIn
     constexpr auto record = std::ptrdiff_t{2} * B;
     for (EdgeOffset e = run.split; e < run.n; ++e)  // the row's last d mod 4: partial 0
       add_record(p, pass.table + record * cols[e], T(1), 2 * B);
-    if (!pass.last) pass.cursor[r] = static_cast<std::uint32_t>(run.place + run.n);
+    if (!pass.last) pass.cursor[r - pass.origin] = static_cast<std::uint32_t>(run.place + run.n);
   }
 }
 #undef HMFNET_AVX2

@@ -65,10 +65,11 @@ struct SegmentPass {
   const I* cols;              // the segment's column indices, k_run_padding readable after them
   const T* table;             // the gathered [cos, sin] from the segment's first column on, 2B
                               // values a column: cols index it
-  T* carry;                   // rows x 4 partials x 2B values
-  std::uint32_t* cursor;      // rows: the place in its row where each row's next run begins
+  T* carry;                   // 4 partials x 2B values a row, from row `origin` on
+  std::uint32_t* cursor;      // the place in its row where each row's next run begins, likewise
   bool first;                 // the carry starts at +0.0 and the runs at place 0
   bool last;                  // the cursor is not written
+  NodeIndex origin = 0;       // the row whose partials and cursor come first in carry and cursor
 };
 
 /// Rows [r0, r1) of one segment in the scalar loop, for every replica count (B > 0 fixed at
@@ -79,15 +80,16 @@ inline void scalar_segment_runs(const SegmentPass<T, I>& pass, const T* weights,
                                 NodeIndex r0, NodeIndex r1) {
   const std::size_t stride = 8 * static_cast<std::size_t>(B > 0 ? B : nb);
   for (NodeIndex r = r0; r < r1; ++r) {
-    T* p = pass.carry + static_cast<std::size_t>(r) * stride;
+    const auto slot = static_cast<std::size_t>(r - pass.origin);
+    T* p = pass.carry + slot * stride;
     if (pass.first) std::fill(p, p + stride, T(0));
     const EdgeOffset begin = pass.row_ptr[r], degree = pass.row_ptr[r + 1] - begin;
-    const EdgeOffset place = pass.first ? 0 : pass.cursor[r];
+    const EdgeOffset place = pass.first ? 0 : pass.cursor[slot];
     const EdgeOffset n = pass.run[r + 1] - pass.run[r];
     const T* w = Weighted ? weights + begin + place : nullptr;
     add_run<T, B, Weighted, I>(p, pass.table, pass.cols + pass.run[r], w, place, n, degree / 4 * 4,
                                nb);
-    if (!pass.last) pass.cursor[r] = static_cast<std::uint32_t>(place + n);
+    if (!pass.last) pass.cursor[slot] = static_cast<std::uint32_t>(place + n);
   }
 }
 

@@ -185,10 +185,13 @@ TEST_CASE("automatic segment width: unblocked while the table fits in L2, half a
   CHECK(automatic_segment_width(1'000'000, 10'000'000, 1'000'000, 16, l2, plenty) == k_unsegmented);
   CHECK(l2_cache_bytes() > 0);
   // The segments' memory at N = 10^6, degree 100, float64, one replica: 200 MB of 16-bit
-  // column indices (62,500 columns a segment), 64 MB of run starts (16 segments), 64 MB
-  // carried, 4 MB of cursors; segments wider than 2^16 columns keep 32-bit indices.
+  // column indices (62,500 columns a segment), 64 MB of run starts (16 segments), 16 MB
+  // carried and 1 MB of cursors (a quarter of the rows); segments wider than 2^16 columns keep
+  // 32-bit indices.
   const std::size_t extra = segmented_bytes(100'000'000, 1'000'000, 16, 62'500, 16);
-  CHECK(extra == 200'000'000 + 16 * 1'000'001 * 4 + 64'000'000 + 4'000'000);
+  CHECK(extra == 200'000'000 + 16 * 1'000'001 * 4 + 16'000'000 + 1'000'000);
+  CHECK(carried_rows(1'000'000) == 250'000);
+  CHECK(carried_rows(1'000'001) == 250'001);
   CHECK(segmented_bytes(100'000'000, 1'000'000, 16, 65'537, 16) == extra + 200'000'000);
   CHECK(segment_index_bytes(65'536) == 2);
   CHECK(segment_index_bytes(65'537) == 4);
