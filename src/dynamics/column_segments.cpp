@@ -146,7 +146,7 @@ ColumnSegments::ColumnSegments(const std::vector<EdgeOffset>& row_ptr,
   }
   m_count = count;
   m_width = width;
-  m_narrow = allow_narrow && width <= k_narrow_segment_columns;
+  m_narrow = allow_narrow && segment_index_bytes(width) == sizeof(std::uint16_t);
   m_rows = nrows;
   m_segment_start = std::move(segment_start);
   m_run_start = std::move(run);

@@ -36,8 +36,9 @@ inline constexpr double k_min_entries_per_segment = 6.0;
 inline constexpr NodeIndex k_automatic_segments = 0;
 inline constexpr NodeIndex k_unsegmented = INT32_MAX;
 
-/// The segmented kernel walks the rows in this many panels, every segment for one panel before
-/// the next, so the carried partial sums (4 x 2B values a row) are held for a quarter of the rows:
+/// The segmented kernel walks the rows in at most this many panels of carried_rows(rows) rows,
+/// every segment for one panel before the next, so the carried partial sums (4 x 2B values a
+/// row) are held for a quarter of the rows:
 /// 128 MB instead of 512 at ER N = 10^6, degree 100, float64, 8 replicas. Each panel reads the
 /// table's slices again; measured on the Intel Xeon (docs/performance.md, "Carried sums in four
 /// panels"; 1 thread): float64 B = 1 1.15x faster, float64 B = 8 ~0.95x, float32 ~0.95-0.97x,
@@ -66,7 +67,7 @@ std::size_t segmented_bytes(EdgeOffset nnz, NodeIndex rows, int segments, NodeIn
 /// streams of column indices, run starts and carried sums; 1 MiB slices measured faster than
 /// 512 KiB and 2 MiB ones on the 2 MiB L2 of the Intel Xeon), but no more than leave
 /// k_min_entries_per_segment entries per row and segment, and one segment when that leaves
-/// fewer than two, or when the segments' memory (segmented_bytes: +780 MB at ER N = 10^6,
+/// fewer than two, or when the segments' memory (segmented_bytes: +393 MB at ER N = 10^6,
 /// degree 100, float64, 8 replicas) exceeds half of `memory_bytes`: a network that runs
 /// unblocked is never pushed out of memory for the speed-up. record_bytes = 2 x replicas x
 /// sizeof(the table's type).
@@ -76,8 +77,10 @@ NodeIndex automatic_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex r
 
 /// Segments of at most this many columns keep their column indices in 16 bits, relative to the
 /// segment's first column: half the copy's bytes (200 MB instead of 400 at ER N = 10^6, degree
-/// 100), and every width the automatic rule gives at N = 10^6, degree 100 (<= 65,536 columns:
-/// slices of 1 MiB hold 65,536 float64 records of one replica, and the d / 6 cap leaves 62,500).
+/// 100). The automatic rule's widths there: 62,500 columns for float64 (one replica: slices of
+/// 1 MiB; more: the d / 6 cap) and float32 with 2 or more replicas, 16-bit; 125,000 for float32
+/// with one replica (8-byte records, 8 slices of 1 MiB), 32-bit: forcing 16 segments of 65,536
+/// columns there ran 0.84x as fast (bench SegmentedStep/1000000/100/1/1/512 against .../1024).
 inline constexpr NodeIndex k_narrow_segment_columns = NodeIndex{1} << 16;
 
 /// The bytes of one stored column index of segments `width` columns wide.

@@ -143,10 +143,11 @@ void rows_kernel_single(const RowKernelArgs<T>& a, NodeIndex rows) {
 }
 
 // The segmented kernel (column_segments.hpp) keeps each row's four partial sums of every
-// replica between segments in `carry` (rows x 4 x 2B values of T) and where its run of entries
-// stopped in `cursor` (rows). An entry's partial is fixed by its place in the row as in the
-// unblocked kernels (place mod 4, the last d mod 4 entries in partial 0), and the runs of a row
-// arrive in CSR order, so every partial receives the same additions in the same order.
+// replica between segments in `carry` (carried_rows(rows) x 4 x 2B values of T: one panel) and
+// where its run of entries stopped in `cursor` (carried_rows(rows)). An entry's partial is fixed by
+// its place in the row as in the unblocked kernels (place mod 4, the last d mod 4 entries in
+// partial 0), and the runs of a row arrive in CSR order, so every partial receives the same
+// additions in the same order.
 template <typename T>
 struct SegmentArgs {
   const ColumnSegments* segments;
@@ -189,8 +190,8 @@ void segmented_rows_kernel(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, 
   const auto threads = static_cast<std::int64_t>(omp_get_num_threads());
   const auto thread = static_cast<std::int64_t>(omp_get_thread_num());
   const NodeIndex panel = carried_rows(rows);
-  for (NodeIndex p0 = 0; p0 < rows; p0 += panel) {
-    const std::int64_t panel_rows = std::min(panel, rows - p0);
+  for (std::int64_t p0 = 0; p0 < rows; p0 += panel) {
+    const std::int64_t panel_rows = std::min<std::int64_t>(panel, rows - p0);
     const auto r0 = static_cast<NodeIndex>(p0 + panel_rows * thread / threads);
     const auto r1 = static_cast<NodeIndex>(p0 + panel_rows * (thread + 1) / threads);
     for (int seg = 0; seg < count; ++seg) {
@@ -205,7 +206,7 @@ void segmented_rows_kernel(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, 
                                    sa.cursor,
                                    seg == 0,
                                    seg + 1 == count,
-                                   p0};
+                                   static_cast<NodeIndex>(p0)};
       if constexpr (!Weighted && (B == 1 || B == 2)) {
         add_segment_runs(pass, nb, r0, r1, true);
       } else {

@@ -79,8 +79,8 @@ class NetworkForce : public CouplingForce {
   NodeIndex m_segmented_rows = -1;  // the shape prepare_segments last decided for
   int m_segmented_replicas = -1;
   ColumnSegments m_segments;
-  // Segmented walk: rows x 4 partials x replicas x [cos, sin] in the table's type, and where
-  // each row's run stopped.
+  // Segmented walk, one panel of carried_rows(rows) rows at a time: 4 partials x replicas x
+  // [cos, sin] a row in the table's type, and where each row's run stopped.
   std::vector<double> m_carry;
   std::vector<float> m_carry_f32;
   std::vector<std::uint32_t> m_cursor;

@@ -5,6 +5,7 @@
 // widths are forced small so that networks of a few hundred nodes take many segments.
 #include <omp.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <vector>
@@ -61,11 +62,12 @@ struct Threads {
 
 }  // namespace
 
-TEST_CASE("segmented force equals the unblocked force bit for bit [ER N=600, widths 1 to 577]",
+TEST_CASE("segmented force equals the unblocked force bit for bit [ER N=603, widths 1 to 577]",
           "[column_segments]") {
   // Degrees around 15, not multiples of 4 (the tail goes to partial 0), so runs start at every
-  // place mod 4 and a width of one column leaves most segments of a row empty.
-  const Network plain = erdos_renyi({600, 0.025, 17});
+  // place mod 4 and a width of one column leaves most segments of a row empty. 603 rows: panels
+  // of 151 rows and a last one of 150.
+  const Network plain = erdos_renyi({603, 0.025, 17});
   const Network heavy = test::pair_weighted(plain);
   for (const Network* net : {&plain, &heavy}) {
     const DistributedNetwork d(*net);
@@ -95,6 +97,15 @@ TEST_CASE("16-bit and 32-bit segment indices give the unblocked force's bits [ER
   // More than 2^16 columns, so that one width keeps 16-bit indices (65,536 columns: 3
   // segments, the last local index 65,535) and the next one 32-bit (65,537: 3 segments).
   const Network net = erdos_renyi({140'000, 3e-5, 31});
+  const NodeIndex columns = net.size();
+  REQUIRE(ColumnSegments(net.row_ptr(), net.cols(), columns, k_narrow_segment_columns).narrow());
+  REQUIRE(
+      !ColumnSegments(net.row_ptr(), net.cols(), columns, k_narrow_segment_columns + 1).narrow());
+  // The largest local index of the narrow cut, 65,535, is stored (column 65,535 or 131,071).
+  const auto stored = [&](NodeIndex c) {
+    return std::find(net.cols().begin(), net.cols().end(), c) != net.cols().end();
+  };
+  REQUIRE((stored(k_narrow_segment_columns - 1) || stored(2 * k_narrow_segment_columns - 1)));
   const DistributedNetwork d(net);
   for (const ForcePrecision precision : {ForcePrecision::float64, ForcePrecision::float32}) {
     for (const int replicas : {1, 2, 3}) {
@@ -107,6 +118,22 @@ TEST_CASE("16-bit and 32-bit segment indices give the unblocked force's bits [ER
         CHECK(same_bits(cut, unblocked));
       }
     }
+  }
+}
+
+TEST_CASE("segmented force with fewer rows than panels and threads [ER N=5, 4 threads]",
+          "[column_segments]") {
+  // 5 rows: panels of 2, 2 and 1 rows, each split over 4 threads (most take none).
+  const Network net = erdos_renyi({5, 0.9, 3});
+  const DistributedNetwork d(net);
+  const Threads scope(4);
+  for (const int replicas : {1, 3}) {
+    const RotorState s = state(d, replicas);
+    const Evaluation unblocked = evaluate(d, ForcePrecision::float64, k_unsegmented, s);
+    const Evaluation cut = evaluate(d, ForcePrecision::float64, 1, s);
+    INFO("B = " << replicas);
+    CHECK(cut.segments > 1);
+    CHECK(same_bits(cut, unblocked));
   }
 }
 

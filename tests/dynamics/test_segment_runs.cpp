@@ -59,16 +59,17 @@ bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
 }
 
-// Both versions over every segment of `cut` (indices of type I), the rows split at `split_row`
-// into two calls.
+// Both versions over every segment of `cut` (indices of type I) for rows [origin, n), their
+// carry and cursors held from row `origin` on (a panel of the kernel), the rows split at
+// `split_row` into two calls.
 template <typename T, typename I>
 void compare(const Rows& rows, const ColumnSegments& cut, const std::vector<T>& t, int replicas,
-             NodeIndex split_row) {
+             NodeIndex origin, NodeIndex split_row) {
   const auto n = static_cast<NodeIndex>(rows.row_ptr.size() - 1);
-  const std::size_t values = 8 * static_cast<std::size_t>(n) * static_cast<std::size_t>(replicas);
+  const auto held = static_cast<std::size_t>(n - origin);
+  const std::size_t values = 8 * held * static_cast<std::size_t>(replicas);
   std::vector<T> carry_vector(values, T(7)), carry_scalar(values, T(7));  // first zeroes them
-  std::vector<std::uint32_t> cursor_vector(static_cast<std::size_t>(n)),
-      cursor_scalar = cursor_vector;
+  std::vector<std::uint32_t> cursor_vector(held), cursor_scalar = cursor_vector;
   for (int s = 0; s < cut.count(); ++s) {
     const bool first = s == 0, last = s + 1 == cut.count();
     const T* table = t.data() + 2 * static_cast<std::ptrdiff_t>(replicas) * cut.first_column(s);
@@ -79,15 +80,16 @@ void compare(const Rows& rows, const ColumnSegments& cut, const std::vector<T>& 
                                         carry_vector.data(),
                                         cursor_vector.data(),
                                         first,
-                                        last};
+                                        last,
+                                        origin};
     SegmentPass<T, I> scalar_pass = vector_pass;
     scalar_pass.carry = carry_scalar.data();
     scalar_pass.cursor = cursor_scalar.data();
-    add_segment_runs(vector_pass, replicas, 0, split_row, true);
+    add_segment_runs(vector_pass, replicas, origin, split_row, true);
     add_segment_runs(vector_pass, replicas, split_row, n, true);
-    add_segment_runs(scalar_pass, replicas, 0, n, false);
-    INFO("segment " << s << " of " << cut.count() << ", B = " << replicas << ", rows split at "
-                    << split_row);
+    add_segment_runs(scalar_pass, replicas, origin, n, false);
+    INFO("segment " << s << " of " << cut.count() << ", B = " << replicas << ", rows from "
+                    << origin << ", split at " << split_row);
     REQUIRE(same_bits(carry_vector, carry_scalar));
     REQUIRE(cursor_vector == cursor_scalar);
   }
@@ -106,13 +108,14 @@ TEST_CASE("the AVX2 segment runs add as the scalar loop does, bit for bit", "[se
     REQUIRE(narrow.narrow());
     REQUIRE(!wide.narrow());
     for (const int replicas : {1, 2}) {
-      for (const NodeIndex split_row : {0, 1, 151}) {
-        compare<double, std::uint16_t>(rows, narrow, table<double>(columns, replicas, 5), replicas,
-                                       split_row);
-        compare<float, std::uint16_t>(rows, narrow, table<float>(columns, replicas, 6), replicas,
-                                      split_row);
-        compare<double, NodeIndex>(rows, wide, table<double>(columns, replicas, 5), replicas,
-                                   split_row);
+      const std::vector<double> t64 = table<double>(columns, replicas, 5);
+      const std::vector<float> t32 = table<float>(columns, replicas, 6);
+      for (const NodeIndex origin : {0, 37}) {
+        for (const NodeIndex split_row : {origin, origin + 1, NodeIndex{151}}) {
+          compare<double, std::uint16_t>(rows, narrow, t64, replicas, origin, split_row);
+          compare<float, std::uint16_t>(rows, narrow, t32, replicas, origin, split_row);
+          compare<double, NodeIndex>(rows, wide, t64, replicas, origin, split_row);
+        }
       }
     }
   }
