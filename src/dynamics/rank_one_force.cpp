@@ -9,7 +9,7 @@
 #endif
 #if defined(__x86_64__)
 #include <immintrin.h>
-#define HMFNET_RANK_ONE_AVX512 1
+#define HMFNET_RANK_ONE_X86 1
 #endif
 
 #include "dynamics/kernel_arithmetic.hpp"
@@ -223,7 +223,7 @@ void field_block(const Item& it, std::size_t w, const FieldArgs& f, double* out)
   for (std::size_t j = 0; j < 2 * nb; ++j) out[2 * it.b0 + j] = acc[j];
 }
 
-#if defined(HMFNET_RANK_ONE_AVX512)
+#if defined(HMFNET_RANK_ONE_X86)
 // A whole group of 8 replicas in the lanes of one AVX-512 register (chosen at run time with the
 // sincos's instruction set, sincos.hpp): every lane does z_block's and field_one's IEEE
 // operations in their order (no contraction: -ffp-contract=off; vsqrtpd rounds as sqrtsd), so
@@ -288,15 +288,85 @@ HMFNET_AVX512 void field_block_avx512(const Item& it, std::size_t w, const Field
   store_pairs(out + 2 * it.b0, order, coupling);
 }
 #undef HMFNET_AVX512
+
+// The same group of 8 replicas in two halves of four AVX2 lanes, where the sincos runs in AVX2
+// (the AMD EPYC of docs/performance.md has no AVX-512): the same IEEE operations in every lane,
+// the same bits. Without it those machines ran both loops in field_pair's two lanes: K_N N = 2000,
+// 16 replicas, 1.52x slower a step than in AVX-512 on the Intel Xeon, of which the sincos
+// explains half.
+#define HMFNET_AVX2 __attribute__((target("avx2")))
+
+// [c0 s0 c1 s1 c2 s2 c3 s3] at p as (c, s) of 4 lanes in replica order.
+HMFNET_AVX2 inline void split_quad(const double* p, __m256d& c, __m256d& s) {
+  const __m256d v0 = _mm256_loadu_pd(p), v1 = _mm256_loadu_pd(p + 4);
+  // unpack works within 128-bit halves: lanes (0, 2, 1, 3), put back in order.
+  c = _mm256_permute4x64_pd(_mm256_unpacklo_pd(v0, v1), 0xD8);
+  s = _mm256_permute4x64_pd(_mm256_unpackhi_pd(v0, v1), 0xD8);
+}
+
+// z_block for a group of k_group = 8 replicas: 16 values in four registers.
+HMFNET_AVX2 void z_block_avx2(const Item& it, std::size_t w, const double* a, const double* cs,
+                              double* out) {
+  __m256d acc[4] = {_mm256_setzero_pd(), _mm256_setzero_pd(), _mm256_setzero_pd(),
+                    _mm256_setzero_pd()};
+  for (std::size_t r = it.r0; r < it.r1; ++r) {
+    const double* q = cs + 2 * (r * w + it.b0);
+    const __m256d va = _mm256_set1_pd(a[r]);
+    for (std::size_t j = 0; j < 4; ++j)
+      acc[j] = _mm256_add_pd(acc[j], _mm256_mul_pd(va, _mm256_loadu_pd(q + 4 * j)));
+  }
+  for (std::size_t j = 0; j < 4; ++j) _mm256_storeu_pd(out + 2 * it.b0 + 4 * j, acc[j]);
+}
+
+// field_block for a group of 8 replicas, replicas b0 + 4h .. b0 + 4h + 3 in half h.
+HMFNET_AVX2 void field_block_avx2(const Item& it, std::size_t w, const FieldArgs& f, double* out) {
+  __m256d zc[2], zs[2], order[2], coupling[2];
+  for (std::size_t h = 0; h < 2; ++h) {
+    split_quad(f.z + 2 * (it.b0 + 4 * h), zc[h], zs[h]);
+    order[h] = coupling[h] = _mm256_setzero_pd();
+  }
+  const __m256d inverse_n = _mm256_set1_pd(f.inverse_n);
+  for (std::size_t r = it.r0; r < it.r1; ++r) {
+    const double a = f.a[r];
+    const __m256d va = _mm256_set1_pd(a), aa = _mm256_set1_pd(a * a);
+    for (std::size_t h = 0; h < 2; ++h) {
+      const std::size_t k = r * w + it.b0 + 4 * h;
+      __m256d c, s;
+      split_quad(f.cs + 2 * k, c, s);
+      __m256d yc = _mm256_mul_pd(va, zc[h]), ys = _mm256_mul_pd(va, zs[h]);
+      if (!f.diagonal) {
+        yc = _mm256_sub_pd(yc, _mm256_mul_pd(aa, c));
+        ys = _mm256_sub_pd(ys, _mm256_mul_pd(aa, s));
+      }
+      const __m256d torque = _mm256_sub_pd(_mm256_mul_pd(c, ys), _mm256_mul_pd(s, yc));
+      _mm256_storeu_pd(f.g + k, _mm256_mul_pd(inverse_n, torque));
+      const __m256d norm2 = _mm256_add_pd(_mm256_mul_pd(yc, yc), _mm256_mul_pd(ys, ys));
+      order[h] = _mm256_add_pd(order[h], _mm256_sqrt_pd(norm2));
+      coupling[h] =
+          _mm256_add_pd(coupling[h], _mm256_add_pd(_mm256_mul_pd(c, yc), _mm256_mul_pd(s, ys)));
+    }
+  }
+  for (std::size_t h = 0; h < 2; ++h) {
+    double o[4], c[4];
+    _mm256_storeu_pd(o, order[h]);
+    _mm256_storeu_pd(c, coupling[h]);
+    for (std::size_t j = 0; j < 4; ++j) {
+      out[2 * (it.b0 + 4 * h + j)] = o[j];
+      out[2 * (it.b0 + 4 * h + j) + 1] = c[j];
+    }
+  }
+}
+#undef HMFNET_AVX2
 #endif
 
-// Whether a work item runs in AVX-512: a whole group, where the sincos runs in it.
-bool wide(const Item& it) {
-#if defined(HMFNET_RANK_ONE_AVX512)
-  return it.nb == k_group && sincos_isa() == SincosIsa::avx512;
+// The instruction set a work item runs in: a whole group in AVX-512 or AVX2, whichever the
+// sincos runs in (sincos.hpp; HMFNET_SINCOS_ISA chooses both), else the baseline code.
+SincosIsa item_isa(const Item& it) {
+#if defined(HMFNET_RANK_ONE_X86)
+  return it.nb == k_group ? sincos_isa() : SincosIsa::baseline;
 #else
   static_cast<void>(it);
-  return false;
+  return SincosIsa::baseline;
 #endif
 }
 
@@ -320,9 +390,14 @@ void RankOneForce::evaluate(const RotorState& state, std::vector<double>& g, For
 #pragma omp for schedule(static)
   for (std::size_t i = 0; i < items; ++i) {
     const Item it = item(m_z_sums, i, w);
-#if defined(HMFNET_RANK_ONE_AVX512)
-    if (wide(it)) {
+#if defined(HMFNET_RANK_ONE_X86)
+    const SincosIsa isa = item_isa(it);
+    if (isa == SincosIsa::avx512) {
       z_block_avx512(it, w, a, m_cs.data(), m_z_sums.partial(it.block));
+      continue;
+    }
+    if (isa == SincosIsa::avx2) {
+      z_block_avx2(it, w, a, m_cs.data(), m_z_sums.partial(it.block));
       continue;
     }
 #endif
@@ -338,9 +413,14 @@ void RankOneForce::evaluate(const RotorState& state, std::vector<double>& g, For
 #pragma omp for schedule(static)
   for (std::size_t i = 0; i < items; ++i) {
     const Item it = item(m_sums, i, w);
-#if defined(HMFNET_RANK_ONE_AVX512)
-    if (wide(it)) {
+#if defined(HMFNET_RANK_ONE_X86)
+    const SincosIsa isa = item_isa(it);
+    if (isa == SincosIsa::avx512) {
       field_block_avx512(it, w, f, m_sums.partial(it.block));
+      continue;
+    }
+    if (isa == SincosIsa::avx2) {
+      field_block_avx2(it, w, f, m_sums.partial(it.block));
       continue;
     }
 #endif

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The vectorised kernels keep their bits across instruction sets (src/dynamics/sincos.hpp,
 # rank_one_force.cpp): `hmfnet simulate` on K_N without self-loops (N = 2500: two of the 2048-row
-# blocks the sums are cut into) with 16 replicas (two whole AVX-512 groups) and 13 (one whole,
-# one partial), and on an ER network, gives the same --json points and results file under the
+# blocks the sums are cut into) with 16 replicas (two whole AVX-512 or AVX2 groups) and 13 (one
+# whole, one partial), on a rank-one network with unequal a_n, and on an ER network, gives the same --json points and results file under the
 # widest set this CPU runs and under HMFNET_SINCOS_ISA=baseline and avx2. On a CPU without
 # AVX-512 the widest is one of the others, and the comparison still holds.
 # Usage: instruction_sets_agree.sh HMFNET OUTDIR
@@ -11,7 +11,21 @@ hmfnet=$1 out=$2/instruction_sets
 rm -rf "$out" && mkdir -p "$out"
 "$hmfnet" generate complete --n 2500 -o "$out/k.h5" > /dev/null
 "$hmfnet" generate er --n 3000 --mean-degree 20 --seed 2 -o "$out/er.h5" > /dev/null
-for case in "k.h5 16" "k.h5 13" "er.h5 9"; do
+# A = a a^T with a_n from 0.5 to 1.5 (the diagonal a_n^2 stored: weighted rank-one networks keep
+# it, rank_one_force.hpp): K_N's a_n = 1 makes every product by a_n exact, so only this network
+# tells a fused multiply-add in the sum of Z from the separate operations.
+/usr/bin/python3 - "$out/rank_one.mtx" <<'PY'
+import sys
+n = 300
+a = [0.5 + k / (n - 1) for k in range(n)]
+with open(sys.argv[1], "w") as f:
+    f.write("%%MatrixMarket matrix coordinate real symmetric\n")
+    f.write(f"{n} {n} {n * (n + 1) // 2}\n")
+    for i in range(n):
+        for j in range(i + 1):
+            f.write(f"{i + 1} {j + 1} {a[i] * a[j]!r}\n")
+PY
+for case in "k.h5 16" "k.h5 13" "er.h5 9" "rank_one.mtx 16"; do
   read -r net replicas <<< "$case"
   for isa in widest baseline avx2; do
     env_isa=()
