@@ -357,18 +357,11 @@ HMFNET_AVX2 void field_block_avx2(const Item& it, std::size_t w, const FieldArgs
   }
 }
 #undef HMFNET_AVX2
-#endif
 
 // The instruction set a work item runs in: a whole group in AVX-512 or AVX2, whichever the
 // sincos runs in (sincos.hpp; HMFNET_SINCOS_ISA chooses both), else the baseline code.
-SincosIsa item_isa(const Item& it) {
-#if defined(HMFNET_RANK_ONE_X86)
-  return it.nb == k_group ? sincos_isa() : SincosIsa::baseline;
-#else
-  static_cast<void>(it);
-  return SincosIsa::baseline;
+SincosIsa item_isa(const Item& it) { return it.nb == k_group ? sincos_isa() : SincosIsa::baseline; }
 #endif
-}
 
 }  // namespace
 
