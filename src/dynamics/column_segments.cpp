@@ -1,5 +1,6 @@
 #include "dynamics/column_segments.hpp"
 
+#include <omp.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -48,10 +49,6 @@ std::size_t read_l2_bytes() {
   return from_sysfs > 0 ? from_sysfs : k_default_l2_bytes;
 }
 
-std::size_t at(std::size_t s, std::size_t rows, NodeIndex r) {
-  return s * (rows + 1) + static_cast<std::size_t>(r);
-}
-
 }  // namespace
 
 std::size_t l2_cache_bytes() {
@@ -82,8 +79,8 @@ std::size_t segmented_bytes(EdgeOffset nnz, NodeIndex rows, int segments, NodeIn
   const auto n = static_cast<std::size_t>(rows);
   const auto panel = static_cast<std::size_t>(carried_rows(rows));
   return static_cast<std::size_t>(nnz) * segment_index_bytes(width) +
-         static_cast<std::size_t>(segments) * (n + 1) * sizeof(std::uint32_t) +
-         panel * 4 * record_bytes + panel * sizeof(std::uint32_t);
+         RunLengths::bytes_without_long_runs(segments, n) + panel * 4 * record_bytes +
+         panel * sizeof(std::uint32_t);
 }
 
 NodeIndex automatic_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex rows,
@@ -122,26 +119,24 @@ ColumnSegments::ColumnSegments(const std::vector<EdgeOffset>& row_ptr,
     cuttable = cuttable && e - b <= UINT32_MAX && std::is_sorted(b, e);
   }
   if (!cuttable) return;
-  // Run lengths, then each segment's prefix sums over its rows (a CSR row pointer per segment),
-  // in place.
-  std::vector<std::uint32_t> run(static_cast<std::size_t>(count) * (nrows + 1), 0);
+  // Run lengths, segment-major; then each segment's total (a segment of 2^32 entries or more
+  // cannot be cut: its run starts are 32-bit).
+  std::vector<std::uint32_t> run(static_cast<std::size_t>(count) * nrows, 0);
 #pragma omp parallel for schedule(static)
   for (NodeIndex r = 0; r < rows; ++r) {
     auto [k, e] = row(r);
     for (NodeIndex s = 0; s < count; ++s) {
       const auto next = s + 1 < count ? std::lower_bound(k, e, (s + 1) * width) : e;
-      run[at(static_cast<std::size_t>(s), nrows, r) + 1] = static_cast<std::uint32_t>(next - k);
+      run[static_cast<std::size_t>(s) * nrows + static_cast<std::size_t>(r)] =
+          static_cast<std::uint32_t>(next - k);
       k = next;
     }
   }
   std::vector<std::size_t> segment_start(static_cast<std::size_t>(count) + 1, 0);
   for (std::size_t s = 0; s < static_cast<std::size_t>(count); ++s) {
     std::uint64_t total = 0;
-    for (NodeIndex r = 0; r < rows; ++r) {
-      total += run[at(s, nrows, r) + 1];
-      if (total > UINT32_MAX) return;
-      run[at(s, nrows, r) + 1] = static_cast<std::uint32_t>(total);
-    }
+    for (std::size_t r = 0; r < nrows; ++r) total += run[s * nrows + r];
+    if (total > UINT32_MAX) return;
     segment_start[s + 1] = segment_start[s] + total;
   }
   m_count = count;
@@ -149,7 +144,9 @@ ColumnSegments::ColumnSegments(const std::vector<EdgeOffset>& row_ptr,
   m_narrow = allow_narrow && segment_index_bytes(width) == sizeof(std::uint16_t);
   m_rows = nrows;
   m_segment_start = std::move(segment_start);
-  m_run_start = std::move(run);
+  m_runs = RunLengths(run, count, nrows);
+  // Released before the copy is made: the peak holds the network, one byte a run and the copy.
+  std::vector<std::uint32_t>().swap(run);
   // Zeros past the end: local index 0 of the last segment, a readable record.
   if (m_narrow) {
     m_cols16.resize(cols.size() + k_run_padding);
@@ -163,16 +160,29 @@ ColumnSegments::ColumnSegments(const std::vector<EdgeOffset>& row_ptr,
 template <typename I>
 void ColumnSegments::copy_local(const std::vector<EdgeOffset>& row_ptr,
                                 const std::vector<NodeIndex>& cols, I* out) const {
-  const auto rows = static_cast<NodeIndex>(m_rows);
-#pragma omp parallel for schedule(static)
-  for (NodeIndex r = 0; r < rows; ++r) {
-    EdgeOffset k = row_ptr[static_cast<std::size_t>(r)];
-    for (int s = 0; s < m_count; ++s) {
-      const std::uint32_t* starts = run_start(s);
-      I* to = out + m_segment_start[static_cast<std::size_t>(s)];
-      const NodeIndex base = first_column(s);
-      for (std::uint32_t j = starts[r]; j < starts[r + 1]; ++j, ++k)
-        to[j] = static_cast<I>(cols[static_cast<std::size_t>(k)] - base);
+  const auto rows = static_cast<std::int64_t>(m_rows);
+  const auto count = static_cast<std::size_t>(m_count);
+  // Allocated here: nothing may throw inside the parallel region.
+  std::vector<RunWalk> walks(static_cast<std::size_t>(omp_get_max_threads()) * count);
+#pragma omp parallel
+  {
+    // A walk only goes forward from the row it was made for, so each thread takes one block of
+    // rows and walks every segment's runs over it.
+    const auto threads = static_cast<std::int64_t>(omp_get_num_threads());
+    const auto thread = static_cast<std::int64_t>(omp_get_thread_num());
+    const auto r0 = static_cast<NodeIndex>(rows * thread / threads);
+    const auto r1 = static_cast<NodeIndex>(rows * (thread + 1) / threads);
+    RunWalk* walk = walks.data() + static_cast<std::size_t>(thread) * count;
+    for (int s = 0; s < m_count; ++s) walk[s] = m_runs.walk(s, r0);
+    for (NodeIndex r = r0; r < r1; ++r) {
+      EdgeOffset k = row_ptr[static_cast<std::size_t>(r)];
+      for (int s = 0; s < m_count; ++s) {
+        const RunSpan span = walk[s].next(r);
+        I* to = out + m_segment_start[static_cast<std::size_t>(s)] + span.begin;
+        const NodeIndex base = first_column(s);
+        for (std::uint32_t j = 0; j < span.n; ++j, ++k)
+          to[j] = static_cast<I>(cols[static_cast<std::size_t>(k)] - base);
+      }
     }
   }
 }

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "dynamics/run_lengths.hpp"
 #include "network/network.hpp"
 
 namespace hmfnet {
@@ -56,18 +57,19 @@ inline NodeIndex carried_rows(NodeIndex rows) {
 std::size_t available_memory_bytes();
 
 /// What segmenting `rows` rows of `nnz` entries into `segments` segments of `width` columns adds
-/// to the force: the column index copy (nnz x segment_index_bytes(width)), the run starts
-/// (segments x (rows + 1) x 4 B), the carried partial sums (carried_rows(rows) x 4 x
-/// record_bytes) and the row cursors (carried_rows(rows) x 4 B).
+/// to the force: the column index copy (nnz x segment_index_bytes(width)), the run lengths
+/// (RunLengths: about segments x rows x 1 B; long runs, which only wide segments and hubs have,
+/// not counted), the carried partial sums (carried_rows(rows) x 4 x record_bytes) and the row
+/// cursors (carried_rows(rows) x 4 B).
 std::size_t segmented_bytes(EdgeOffset nnz, NodeIndex rows, int segments, NodeIndex width,
                             std::size_t record_bytes);
 
 /// The rule: the whole column space (one segment) when the table, columns x record_bytes, fits
 /// in `l2_bytes`; else as many segments as slices of half the L2 (the other half holds the
-/// streams of column indices, run starts and carried sums; 1 MiB slices measured faster than
+/// streams of column indices, run lengths and carried sums; 1 MiB slices measured faster than
 /// 512 KiB and 2 MiB ones on the 2 MiB L2 of the Intel Xeon), but no more than leave
 /// k_min_entries_per_segment entries per row and segment, and one segment when that leaves
-/// fewer than two, or when the segments' memory (segmented_bytes: +393 MB at ER N = 10^6,
+/// fewer than two, or when the segments' memory (segmented_bytes: +346 MB at ER N = 10^6,
 /// degree 100, float64, 8 replicas) exceeds half of `memory_bytes`: a network that runs
 /// unblocked is never pushed out of memory for the speed-up. record_bytes = 2 x replicas x
 /// sizeof(the table's type).
@@ -87,11 +89,11 @@ inline constexpr NodeIndex k_narrow_segment_columns = NodeIndex{1} << 16;
 std::size_t segment_index_bytes(NodeIndex width);
 
 /// The rows cut by columns, as the paper stores them: one CSR per segment (its column indices
-/// in one array, segment after segment, and per segment the start of each row's run). The
-/// indices are relative to the segment's first column (first_column), in 16 bits where the
-/// segments are at most k_narrow_segment_columns wide (narrow()), else in 32. Memory:
-/// (nnz + k_run_padding) x 2 or 4 bytes (one more column index array; the padding:
-/// segment_runs.hpp) plus segments x (rows + 1) x 4 bytes (at most nnz x 4 /
+/// in one array, segment after segment, and per segment where each row's run lies: RunLengths,
+/// its length in a byte). The indices are relative to the segment's first column
+/// (first_column), in 16 bits where the segments are at most k_narrow_segment_columns wide
+/// (narrow()), else in 32. Memory: (nnz + k_run_padding) x 2 or 4 bytes (one more column index
+/// array; the padding: segment_runs.hpp) plus about segments x rows x 1 byte (at most nnz /
 /// k_min_entries_per_segment under the automatic rule). The weights are not copied: a row's run
 /// in a segment continues where its run in the previous segment ended. (Reading each run from
 /// the network's own CSR instead of a copy saves the array and ran 0.20x as fast at ER N = 10^6,
@@ -115,18 +117,15 @@ class ColumnSegments {
   bool narrow() const { return m_narrow; }
   /// The global column of segment s's local index 0.
   NodeIndex first_column(int s) const { return static_cast<NodeIndex>(s) * m_width; }
-  /// Row r's run in segment s is cols<I>(s)[run_start(s)[r]] .. cols<I>(s)[run_start(s)[r + 1]
-  /// - 1], each index relative to first_column(s); I is std::uint16_t where narrow(), else
-  /// NodeIndex.
-  const std::uint32_t* run_start(int s) const {
-    return m_run_start.data() + static_cast<std::size_t>(s) * (m_rows + 1);
-  }
+  /// Where the rows' runs lie: runs().walk(s, r).next(r) is row r's run in segment s, cols<I>(s)
+  /// [begin] .. cols<I>(s)[begin + n - 1], each index relative to first_column(s); I is
+  /// std::uint16_t where narrow(), else NodeIndex.
+  const RunLengths& runs() const { return m_runs; }
   template <typename I>
   const I* cols(int s) const;
   std::size_t bytes() const {
     return m_cols16.size() * sizeof(std::uint16_t) + m_cols32.size() * sizeof(NodeIndex) +
-           m_run_start.size() * sizeof(std::uint32_t) +
-           m_segment_start.size() * sizeof(std::size_t);
+           m_runs.bytes() + m_segment_start.size() * sizeof(std::size_t);
   }
 
  private:
@@ -140,9 +139,9 @@ class ColumnSegments {
   bool m_narrow = false;
   std::size_t m_rows = 0;
   std::vector<std::size_t> m_segment_start;  // count + 1: where each segment's entries begin
-  std::vector<std::uint32_t> m_run_start;    // count x (rows + 1), relative to the segment
-  std::vector<std::uint16_t> m_cols16;       // nnz, segment-major, where narrow()
-  std::vector<NodeIndex> m_cols32;           // nnz, segment-major, otherwise
+  RunLengths m_runs;
+  std::vector<std::uint16_t> m_cols16;  // nnz, segment-major, where narrow()
+  std::vector<NodeIndex> m_cols32;      // nnz, segment-major, otherwise
 };
 
 template <>

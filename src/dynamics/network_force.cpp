@@ -199,7 +199,8 @@ void segmented_rows_kernel(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, 
           a.column_cs + static_cast<std::ptrdiff_t>(record) *
                             static_cast<std::ptrdiff_t>(sa.segments->first_column(seg));
       const SegmentPass<T, I> pass{a.row_ptr,
-                                   sa.segments->run_start(seg),
+                                   &sa.segments->runs(),
+                                   seg,
                                    sa.segments->template cols<I>(seg),
                                    table,
                                    sa.carry,

@@ -22,9 +22,8 @@ struct Run {
 };
 
 template <typename T, typename I>
-inline Run run_of(const SegmentPass<T, I>& pass, NodeIndex r) {
+inline Run run_of(const SegmentPass<T, I>& pass, NodeIndex r, EdgeOffset n) {
   const EdgeOffset place = pass.first ? 0 : pass.cursor[r - pass.origin];
-  const EdgeOffset n = pass.run[r + 1] - pass.run[r];
   const EdgeOffset full = (pass.row_ptr[r + 1] - pass.row_ptr[r]) / 4 * 4;
   return {place, n, std::clamp<EdgeOffset>(full - place, 0, n)};
 }
@@ -118,11 +117,13 @@ template <typename T, int B, typename I>
 HMFNET_AVX2 void vector_runs(const SegmentPass<T, I>& pass, NodeIndex r0, NodeIndex r1) {
   constexpr std::size_t stride = 8 * static_cast<std::size_t>(B);
   const auto* table = reinterpret_cast<const char*>(pass.table);
+  RunWalk walk = pass.runs->walk(pass.segment, r0);
   for (NodeIndex r = r0; r < r1; ++r) {
     T* p = pass.carry + static_cast<std::size_t>(r - pass.origin) * stride;
     if (pass.first) std::memset(p, 0, stride * sizeof(T));
-    const Run run = run_of(pass, r);
-    const I* cols = pass.cols + pass.run[r];
+    const RunSpan span = walk.next(r);
+    const Run run = run_of(pass, r, span.n);
+    const I* cols = pass.cols + span.begin;
     if (run.split > 0) add_blocks<T, B, I>(p, table, cols, run);
     constexpr auto record = std::ptrdiff_t{2} * B;
     for (EdgeOffset e = run.split; e < run.n; ++e)  // the row's last d mod 4: partial 0

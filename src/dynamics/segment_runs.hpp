@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "dynamics/run_lengths.hpp"
 #include "network/network.hpp"
 
 namespace hmfnet {
@@ -61,7 +62,8 @@ inline constexpr std::size_t k_run_padding = 8;
 template <typename T, typename I>
 struct SegmentPass {
   const EdgeOffset* row_ptr;  // the CSR: a row's degree fixes where its last d mod 4 entries begin
-  const std::uint32_t* run;   // where each row's run starts in `cols` (rows + 1)
+  const RunLengths* runs;     // where each row's run lies in `cols`: runs->walk(segment, r)
+  int segment;                // which of runs' segments this pass walks
   const I* cols;              // the segment's column indices, k_run_padding readable after them
   const T* table;             // the gathered [cos, sin] from the segment's first column on, 2B
                               // values a column: cols index it
@@ -79,15 +81,17 @@ template <typename T, int B, bool Weighted, typename I>
 inline void scalar_segment_runs(const SegmentPass<T, I>& pass, const T* weights, int nb,
                                 NodeIndex r0, NodeIndex r1) {
   const std::size_t stride = 8 * static_cast<std::size_t>(B > 0 ? B : nb);
+  RunWalk walk = pass.runs->walk(pass.segment, r0);
   for (NodeIndex r = r0; r < r1; ++r) {
     const auto slot = static_cast<std::size_t>(r - pass.origin);
     T* p = pass.carry + slot * stride;
     if (pass.first) std::fill(p, p + stride, T(0));
     const EdgeOffset begin = pass.row_ptr[r], degree = pass.row_ptr[r + 1] - begin;
     const EdgeOffset place = pass.first ? 0 : pass.cursor[slot];
-    const EdgeOffset n = pass.run[r + 1] - pass.run[r];
+    const RunSpan run = walk.next(r);
+    const EdgeOffset n = run.n;
     const T* w = Weighted ? weights + begin + place : nullptr;
-    add_run<T, B, Weighted, I>(p, pass.table, pass.cols + pass.run[r], w, place, n, degree / 4 * 4,
+    add_run<T, B, Weighted, I>(p, pass.table, pass.cols + run.begin, w, place, n, degree / 4 * 4,
                                nb);
     if (!pass.last) pass.cursor[slot] = static_cast<std::uint32_t>(place + n);
   }

@@ -137,6 +137,52 @@ TEST_CASE("segmented force with fewer rows than panels and threads [ER N=5, 4 th
   }
 }
 
+TEST_CASE("runs of 255 entries and more (hubs) give the unblocked force's bits [N=1500]",
+          "[column_segments]") {
+  // ER with five hubs joined to every node: their runs in segments of 400 columns are ~400
+  // entries, past the one-byte lengths (run_lengths.hpp), so the walk reads them from the long
+  // runs. Hub 900 lies before row 937 in its block of 64 rows, and 937 (a hub too) is where the
+  // second of two threads starts the third panel (rows 750-1124): a walk made from inside a
+  // block steps over a long run before it and starts on one. Hub 720 does the same for the
+  // index copy's walk (ColumnSegments: its second thread starts at row 750, in block 704-767).
+  const NodeIndex n = 1500;
+  const Network er = erdos_renyi({n, 0.01, 41});
+  std::vector<std::pair<NodeIndex, NodeIndex>> edges;
+  const std::vector<NodeIndex> hubs{0, 720, 900, 937, 1499};
+  const auto is_hub = [&](NodeIndex v) {
+    return std::find(hubs.begin(), hubs.end(), v) != hubs.end();
+  };
+  for (NodeIndex i = 0; i < n; ++i) {
+    for (EdgeOffset k = er.row_ptr()[static_cast<std::size_t>(i)];
+         k < er.row_ptr()[static_cast<std::size_t>(i) + 1]; ++k) {
+      const NodeIndex j = er.cols()[static_cast<std::size_t>(k)];
+      if (i < j && !is_hub(i) && !is_hub(j)) edges.emplace_back(i, j);
+    }
+  }
+  for (const NodeIndex h : hubs)
+    for (NodeIndex j = 0; j < n; ++j)
+      if (j != h && (!is_hub(j) || h < j)) edges.emplace_back(std::min(h, j), std::max(h, j));
+  const Network net = Network::from_undirected_edges(n, edges);
+  const DistributedNetwork d(net);
+  const Threads scope(2);
+  int team = 0;
+  in_team([&] {
+#pragma omp master
+    team = omp_get_num_threads();
+  });
+  REQUIRE(team == 2);  // the walks above start inside blocks only with two threads
+  for (const ForcePrecision precision : {ForcePrecision::float64, ForcePrecision::float32}) {
+    for (const int replicas : {1, 2, 3}) {
+      const RotorState s = state(d, replicas);
+      const Evaluation unblocked = evaluate(d, precision, k_unsegmented, s);
+      const Evaluation cut = evaluate(d, precision, 400, s);
+      INFO(to_string(precision) << ", B = " << replicas);
+      CHECK(cut.segments == 4);
+      CHECK(same_bits(cut, unblocked));
+    }
+  }
+}
+
 TEST_CASE("segmented leap-frog trajectories equal unblocked ones bit for bit [ER N=400, 40 steps]",
           "[column_segments]") {
   const Network plain = erdos_renyi({400, 0.04, 23});
@@ -180,7 +226,8 @@ TEST_CASE("segment runs put every row back together in CSR order; unsorted rows 
     for (NodeIndex r = 0; r < 4; ++r) {
       std::vector<NodeIndex> joined;
       for (int s = 0; s < cut.count(); ++s) {
-        for (std::uint32_t k = cut.run_start(s)[r]; k < cut.run_start(s)[r + 1]; ++k) {
+        const RunSpan run = cut.runs().walk(s, r).next(r);
+        for (std::uint32_t k = run.begin; k < run.begin + run.n; ++k) {
           const NodeIndex local =
               allow_narrow ? NodeIndex{cut.cols<std::uint16_t>(s)[k]} : cut.cols<NodeIndex>(s)[k];
           CHECK(local < 3);  // the run lies in its segment's columns
@@ -212,11 +259,12 @@ TEST_CASE("automatic segment width: unblocked while the table fits in L2, half a
   CHECK(automatic_segment_width(1'000'000, 10'000'000, 1'000'000, 16, l2, plenty) == k_unsegmented);
   CHECK(l2_cache_bytes() > 0);
   // The segments' memory at N = 10^6, degree 100, float64, one replica: 200 MB of 16-bit
-  // column indices (62,500 columns a segment), 64 MB of run starts (16 segments), 16 MB
-  // carried and 1 MB of cursors (a quarter of the rows); segments wider than 2^16 columns keep
-  // 32-bit indices.
+  // column indices (62,500 columns a segment), 17 MB of run lengths (a byte a run of 16
+  // segments, a 4-byte start every 64 rows, 17 offsets into the long runs), 16 MB carried and
+  // 1 MB of cursors (a quarter of the rows); segments wider than 2^16 columns keep 32-bit
+  // indices.
   const std::size_t extra = segmented_bytes(100'000'000, 1'000'000, 16, 62'500, 16);
-  CHECK(extra == 200'000'000 + 16 * 1'000'001 * 4 + 16'000'000 + 1'000'000);
+  CHECK(extra == 200'000'000 + (16'000'000 + 16 * 15'626 * 4 + 17 * 8) + 16'000'000 + 1'000'000);
   CHECK(carried_rows(1'000'000) == 250'000);
   CHECK(carried_rows(1'000'001) == 250'001);
   CHECK(segmented_bytes(100'000'000, 1'000'000, 16, 65'537, 16) == extra + 200'000'000);

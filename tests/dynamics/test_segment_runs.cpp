@@ -74,7 +74,8 @@ void compare(const Rows& rows, const ColumnSegments& cut, const std::vector<T>& 
     const bool first = s == 0, last = s + 1 == cut.count();
     const T* table = t.data() + 2 * static_cast<std::ptrdiff_t>(replicas) * cut.first_column(s);
     const SegmentPass<T, I> vector_pass{rows.row_ptr.data(),
-                                        cut.run_start(s),
+                                        &cut.runs(),
+                                        s,
                                         cut.template cols<I>(s),
                                         table,
                                         carry_vector.data(),
@@ -135,14 +136,9 @@ TEST_CASE("the AVX2 segment runs mask the slots past a run's end", "[segment_run
   const std::vector<double> ones(32, 1.0);
   std::vector<double> carry(16, 0.0);
   std::vector<std::uint32_t> cursor(2);
-  const SegmentPass<double, std::uint16_t> pass{rows.row_ptr.data(),
-                                                cut.run_start(0),
-                                                cut.cols<std::uint16_t>(0),
-                                                ones.data(),
-                                                carry.data(),
-                                                cursor.data(),
-                                                true,
-                                                false};
+  const SegmentPass<double, std::uint16_t> pass{
+      rows.row_ptr.data(), &cut.runs(), 0,    cut.cols<std::uint16_t>(0), ones.data(), carry.data(),
+      cursor.data(),       true,        false};
   add_segment_runs(pass, 1, 0, 1, true);
   double cos_sum = 0;
   for (std::size_t j = 0; j < 4; ++j) cos_sum += carry[2 * j];
