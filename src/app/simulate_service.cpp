@@ -15,6 +15,7 @@
 #include "core/error.hpp"
 #include "dynamics/device_stepper.hpp"
 #include "dynamics/interrupt.hpp"
+#include "dynamics/network_force.hpp"
 #include "dynamics/run_file.hpp"
 #include "parallel/parallel_session.hpp"
 #include "spectral/perron.hpp"
@@ -106,8 +107,10 @@ void prepare_simulate(const SimulateRequest& r) {
                          {{"--output", r.output}, {"--checkpoint", r.checkpoint}});
 }
 
-SimulateOutcome simulate(const SimulateRequest& r, const DistributedInput& input,
-                         const SimulateHooks& hooks) {
+namespace {
+
+SimulateOutcome run_simulation(const SimulateRequest& r, const DistributedInput& input,
+                               const SimulateHooks& hooks, DistributedNetwork* owned) {
   const CompleteGraph* complete = input.complete ? &*input.complete : nullptr;
   const DistributedNetwork& distributed = *input.network;
   SimulateOutcome o;
@@ -121,6 +124,10 @@ SimulateOutcome simulate(const SimulateRequest& r, const DistributedInput& input
   o.params = simulation_parameters(r, o.Kc);
   require_space(r, o.params, n);
   auto force = choose_force(r.force, r.precision, input);
+  if (auto* sparse = dynamic_cast<NetworkForce*>(force.get());
+      sparse != nullptr && owned != nullptr) {
+    sparse->take_columns(*owned);
+  }
   const std::vector<double> degrees =
       complete != nullptr ? std::vector<double>(static_cast<std::size_t>(n), complete->degree())
                           : distributed.gather(distributed.local_degrees());
@@ -154,6 +161,19 @@ SimulateOutcome simulate(const SimulateRequest& r, const DistributedInput& input
   for (const PointResult& p : result.points) o.points.push_back(summary(p, o.Kc));
   if (!r.output.empty()) write_results_file(r, o, hooks);
   return o;
+}
+
+}  // namespace
+
+SimulateOutcome simulate(const SimulateRequest& r, const DistributedInput& input,
+                         const SimulateHooks& hooks) {
+  return run_simulation(r, input, hooks, nullptr);
+}
+
+SimulateOutcome simulate(const SimulateRequest& r, DistributedInput&& input,
+                         const SimulateHooks& hooks) {
+  const DistributedInput run_input = std::move(input);
+  return run_simulation(r, run_input, hooks, run_input.network.get());
 }
 
 }  // namespace hmfnet::app

@@ -57,9 +57,9 @@ void run(SimulateFlags& f) {
   } catch (const ParameterError& e) {
     throw CLI::ValidationError(e.what());
   }
-  const DistributedInput input = f.read.read_distributed(f.request.input);
+  DistributedInput input = f.read.read_distributed(f.request.input);
   hooks.before_integration = install_interrupt_handlers;
-  const app::SimulateOutcome o = app::simulate(f.request, input, hooks);
+  const app::SimulateOutcome o = app::simulate(f.request, std::move(input), hooks);
   if (is_root()) std::cout << (f.json ? report_json(o) + '\n' : report_text(o)) << std::flush;
 }
 

@@ -10,6 +10,7 @@
 // indices contiguous, so the index stream is read once a step, not once a segment per row).
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "dynamics/run_lengths.hpp"
@@ -71,7 +72,9 @@ std::size_t segmented_bytes(EdgeOffset nnz, NodeIndex rows, int segments, NodeIn
 /// k_min_entries_per_segment entries per row and segment, and one segment when that leaves
 /// fewer than two, or when the segments' memory (segmented_bytes: +346 MB at ER N = 10^6,
 /// degree 100, float64, 8 replicas) exceeds half of `memory_bytes`: a network that runs
-/// unblocked is never pushed out of memory for the speed-up. record_bytes = 2 x replicas x
+/// unblocked is never pushed out of memory for the speed-up (counted as added even where the
+/// force takes the network's indices and the copy replaces them: the rule errs on the side of
+/// memory). record_bytes = 2 x replicas x
 /// sizeof(the table's type).
 NodeIndex automatic_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex rows,
                                   std::size_t record_bytes, std::size_t l2_bytes,
@@ -93,9 +96,10 @@ std::size_t segment_index_bytes(NodeIndex width);
 /// its length in a byte). The indices are relative to the segment's first column
 /// (first_column), in 16 bits where the segments are at most k_narrow_segment_columns wide
 /// (narrow()), else in 32. Memory: (nnz + k_run_padding) x 2 or 4 bytes (one more column index
-/// array; the padding: segment_runs.hpp) plus about segments x rows x 1 byte (at most nnz /
-/// k_min_entries_per_segment under the automatic rule). The weights are not copied: a row's run
-/// in a segment continues where its run in the previous segment ended. (Reading each run from
+/// array, or in place of the CSR's own where taking() takes them; the padding: segment_runs.hpp)
+/// plus about segments x rows x 1 byte (at most nnz / k_min_entries_per_segment under the
+/// automatic rule). The weights are not copied: a row's run in a segment continues where its run
+/// in the previous segment ended. (Reading each run from
 /// the network's own CSR instead of a copy saves the array and ran 0.20x as fast at ER N = 10^6,
 /// degree 100, one replica: one cache line fetched per row and segment, at strides the prefetcher
 /// cannot follow; docs/performance.md.)
@@ -112,6 +116,17 @@ class ColumnSegments {
   ColumnSegments(const std::vector<EdgeOffset>& row_ptr, const std::vector<NodeIndex>& cols,
                  NodeIndex columns, NodeIndex width, bool allow_narrow = true);
 
+  /// As above, taking `cols` over where the rows are cut: each page of `cols` is given back to
+  /// the system as soon as its entries are copied, so the peak holds the 4-byte indices or the
+  /// copy but not both (+0 MB for the copy at ER N = 10^6, degree 100, instead of +200), and
+  /// `cols` is left empty. Where the rows are not cut (one segment), `cols` is left as it was.
+  static ColumnSegments taking(const std::vector<EdgeOffset>& row_ptr, std::vector<NodeIndex>& cols,
+                               NodeIndex columns, NodeIndex width);
+
+  /// The rows' column indices in CSR order, put back together from the segments (to cut them
+  /// again at another width once the CSR's own were taken). Empty for one segment.
+  std::vector<NodeIndex> csr_columns() const;
+
   int count() const { return m_count; }
   /// Whether the indices are 16-bit (cols<std::uint16_t>) or 32-bit (cols<NodeIndex>).
   bool narrow() const { return m_narrow; }
@@ -124,15 +139,20 @@ class ColumnSegments {
   template <typename I>
   const I* cols(int s) const;
   std::size_t bytes() const {
-    return m_cols16.size() * sizeof(std::uint16_t) + m_cols32.size() * sizeof(NodeIndex) +
-           m_runs.bytes() + m_segment_start.size() * sizeof(std::size_t);
+    return m_indices * (m_narrow ? sizeof(std::uint16_t) : sizeof(NodeIndex)) + m_runs.bytes() +
+           m_segment_start.size() * sizeof(std::size_t);
   }
 
  private:
-  // Each row's runs into `out`, segment by segment, relative to the segment's first column.
+  // The constructors' work; `taken`: cols itself, whose pages go back as they are copied.
+  ColumnSegments(const std::vector<EdgeOffset>& row_ptr, const std::vector<NodeIndex>& cols,
+                 NodeIndex columns, NodeIndex width, bool allow_narrow,
+                 std::vector<NodeIndex>* taken);
+  // Each row's runs into `out`, segment by segment, relative to the segment's first column;
+  // where `release`, the pages of cols behind each thread's copy go back to the system.
   template <typename I>
   void copy_local(const std::vector<EdgeOffset>& row_ptr, const std::vector<NodeIndex>& cols,
-                  I* out) const;
+                  I* out, bool release) const;
 
   int m_count = 1;
   NodeIndex m_width = 0;
@@ -140,18 +160,21 @@ class ColumnSegments {
   std::size_t m_rows = 0;
   std::vector<std::size_t> m_segment_start;  // count + 1: where each segment's entries begin
   RunLengths m_runs;
-  std::vector<std::uint16_t> m_cols16;  // nnz, segment-major, where narrow()
-  std::vector<NodeIndex> m_cols32;      // nnz, segment-major, otherwise
+  // nnz + k_run_padding indices, segment-major: 16-bit where narrow(), else 32-bit. Arrays left
+  // uninitialised until the copy writes them, so their pages are taken only as it goes.
+  std::size_t m_indices = 0;
+  std::unique_ptr<std::uint16_t[]> m_cols16;
+  std::unique_ptr<NodeIndex[]> m_cols32;
 };
 
 template <>
 inline const std::uint16_t* ColumnSegments::cols<std::uint16_t>(int s) const {
-  return m_cols16.data() + m_segment_start[static_cast<std::size_t>(s)];
+  return m_cols16.get() + m_segment_start[static_cast<std::size_t>(s)];
 }
 
 template <>
 inline const NodeIndex* ColumnSegments::cols<NodeIndex>(int s) const {
-  return m_cols32.data() + m_segment_start[static_cast<std::size_t>(s)];
+  return m_cols32.get() + m_segment_start[static_cast<std::size_t>(s)];
 }
 
 }  // namespace hmfnet

@@ -308,6 +308,7 @@ NetworkForce::NetworkForce(const DistributedNetwork& network, ForcePrecision pre
                            NodeIndex segment_width)
     : m_network(network),
       m_adjacency(network.local_adjacency()),
+      m_nnz(static_cast<EdgeOffset>(m_adjacency.cols.size())),
       m_inverse_n(1.0 / static_cast<double>(network.global_size())),
       m_identity_import(network.columns_are_owned_rows()),
       m_precision(precision),
@@ -323,7 +324,7 @@ template <typename T>
 void NetworkForce::run_rows(const T* weights, const T* column_cs, NodeIndex rows, int replicas,
                             std::vector<double>& g) {
   const RowKernelArgs<T> args{m_adjacency.row_ptr.data(),
-                              m_adjacency.cols.data(),
+                              csr_cols().data(),
                               weights,
                               column_cs,
                               m_owned_cs.data(),
@@ -344,7 +345,38 @@ void NetworkForce::run_rows(const T* weights, const T* column_cs, NodeIndex rows
   run_segmented_kernel(args, SegmentArgs<T>{&m_segments, carry, m_cursor.data()}, rows, replicas);
 }
 
+void NetworkForce::take_columns(DistributedNetwork& network) {
+  if (&network != &m_network) {
+    throw ParameterError("NetworkForce::take_columns", "another network than the force's",
+                         "the network the force was made with");
+  }
+  m_column_owner = &network;
+}
+
+void NetworkForce::cut(NodeIndex width) {
+  const bool segmented = width < m_adjacency.columns;
+  if (m_column_owner != nullptr && !m_took_columns && segmented) {
+    m_own_cols = m_column_owner->release_columns();
+    m_took_columns = true;
+  }
+  if (!m_took_columns) {
+    m_segments = ColumnSegments(m_adjacency.row_ptr, m_adjacency.cols, m_adjacency.columns, width);
+    return;
+  }
+  // Taken: the indices are in the segments, or in m_own_cols where one segment holds them.
+  if (m_own_cols.empty()) {
+    m_own_cols = m_segments.csr_columns();
+    m_segments = ColumnSegments();  // its copy freed before the next is made
+  }
+  m_segments = ColumnSegments::taking(m_adjacency.row_ptr, m_own_cols, m_adjacency.columns, width);
+}
+
 void NetworkForce::prepare_segments(NodeIndex rows, int replicas) {
+  // Another force (or this one's network) took the indices this force was made to read.
+  if (!m_took_columns && m_adjacency.cols.size() != static_cast<std::size_t>(m_nnz)) {
+    throw ParameterError("the sparse force", "the network's column indices were given to another",
+                         "a network whose column indices this force reads or took");
+  }
   // prepare runs before every evaluation outside a team (each step on one thread), and the
   // automatic rule reads /proc/meminfo and the cache size: decided once per shape (14 us a step
   // measured on ER N = 1000, degree 4, where a whole step took 10 us before the rule).
@@ -354,12 +386,11 @@ void NetworkForce::prepare_segments(NodeIndex rows, int replicas) {
   const NodeIndex width =
       m_segment_request != k_automatic_segments
           ? m_segment_request
-          : automatic_segment_width(m_adjacency.columns,
-                                    static_cast<EdgeOffset>(m_adjacency.cols.size()), rows,
+          : automatic_segment_width(m_adjacency.columns, m_nnz, rows,
                                     2 * static_cast<std::size_t>(replicas) * value_bytes,
                                     l2_cache_bytes(), available_memory_bytes());
   if (width != m_segment_width) {
-    m_segments = ColumnSegments(m_adjacency.row_ptr, m_adjacency.cols, m_adjacency.columns, width);
+    cut(width);
     m_segment_width = width;
   }
   const auto panel = static_cast<std::size_t>(m_segments.count() > 1 ? carried_rows(rows) : 0);

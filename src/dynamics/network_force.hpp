@@ -34,18 +34,24 @@ class NetworkForce : public CouplingForce {
                         ForcePrecision precision = ForcePrecision::float64,
                         NodeIndex segment_width = k_automatic_segments);
 
+  /// Lets the force take `network`'s column indices (the network it was made with) when it cuts
+  /// them into segments: the segments' copy then replaces them (DistributedNetwork::
+  /// release_columns; peak RSS at ER N = 10^6, degree 100: docs/performance.md, "The segments
+  /// in place of the network's indices"). For a run that reads the network only through this
+  /// force (the CLI's simulate); the same bits either way.
+  void take_columns(DistributedNetwork& network);
+
   void prepare(const RotorState& state, std::vector<double>& g, ForceSums& sums) override;
   void evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) override;
-  EdgeOffset work_per_evaluation() const override {
-    return static_cast<EdgeOffset>(m_adjacency.cols.size());
-  }
+  EdgeOffset work_per_evaluation() const override { return m_nnz; }
   const char* name() const override {
     return m_precision == ForcePrecision::float64 ? "sparse" : "sparse-float32";
   }
   ForcePrecision precision() const { return m_precision; }
   /// Column segments of the last prepare (1: unblocked).
   int segments() const { return m_segments.count(); }
-  /// Bytes the segmented walk holds besides the network: the segments and the carried sums.
+  /// Bytes the segmented walk holds: the segments and the carried sums (besides the network's
+  /// column indices, or in place of them where take_columns let the force take them).
   std::size_t segment_bytes() const {
     return m_segments.bytes() + m_carry.size() * sizeof(double) +
            m_carry_f32.size() * sizeof(float) + m_cursor.size() * sizeof(std::uint32_t);
@@ -60,9 +66,16 @@ class NetworkForce : public CouplingForce {
   /// Cuts the columns for `replicas` (rebuilt only when the width changes) and sizes the carry;
   /// nothing when rows and replicas are those of the last call.
   void prepare_segments(NodeIndex rows, int replicas);
+  /// m_segments at `width`, from the network's column indices or, once taken, from this force's.
+  void cut(NodeIndex width);
+  /// The CSR's column indices, where the unblocked kernel reads them.
+  const std::vector<NodeIndex>& csr_cols() const {
+    return m_took_columns ? m_own_cols : m_adjacency.cols;
+  }
 
   const DistributedNetwork& m_network;
   const DistributedNetwork::LocalAdjacency& m_adjacency;  ///< the network's own rows
+  EdgeOffset m_nnz;                                       // stored entries of this rank's rows
   double m_inverse_n;
   bool m_identity_import;           // one rank: the column space is the owned block
   std::vector<double> m_owned_cs;   // rows x replicas x [cos, sin]
@@ -79,6 +92,9 @@ class NetworkForce : public CouplingForce {
   NodeIndex m_segmented_rows = -1;  // the shape prepare_segments last decided for
   int m_segmented_replicas = -1;
   ColumnSegments m_segments;
+  DistributedNetwork* m_column_owner = nullptr;  // take_columns: the network to take them from
+  bool m_took_columns = false;
+  std::vector<NodeIndex> m_own_cols;  // taken, where no segments hold them (one segment)
   // Segmented walk, one panel of carried_rows(rows) rows at a time: 4 partials x replicas x
   // [cos, sin] a row in the table's type, and where each row's run stopped.
   std::vector<double> m_carry;

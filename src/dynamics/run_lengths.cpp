@@ -2,32 +2,49 @@
 
 #include <algorithm>
 
+#include "core/error.hpp"
+
 namespace hmfnet {
 
-RunLengths::RunLengths(const std::vector<std::uint32_t>& counts, int segments, std::size_t rows)
+RunLengths::RunLengths(int segments, std::size_t rows)
     : m_rows(rows),
-      m_length(static_cast<std::size_t>(segments) * rows),
-      m_block_start(static_cast<std::size_t>(segments) * blocks()),
-      m_long_start(static_cast<std::size_t>(segments) + 1, 0) {
-  const auto count = static_cast<std::ptrdiff_t>(m_length.size());
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t k = 0; k < count; ++k) {
-    const std::uint32_t n = counts[static_cast<std::size_t>(k)];
-    m_length[static_cast<std::size_t>(k)] =
-        n >= k_long_run ? k_long_run : static_cast<std::uint8_t>(n);
-  }
-  // Block starts and long runs: one ordered pass a segment.
-  for (std::size_t s = 0; s < static_cast<std::size_t>(segments); ++s) {
-    std::uint32_t start = 0;
-    for (std::size_t r = 0; r < rows; ++r) {
-      if (r % k_run_block == 0) m_block_start[s * blocks() + r / k_run_block] = start;
-      const std::uint32_t n = counts[s * rows + r];
-      if (n >= k_long_run) m_long.push_back({static_cast<NodeIndex>(r), n});
+      m_length(static_cast<std::size_t>(segments) * rows, 0),
+      m_block_start(static_cast<std::size_t>(segments) * blocks(), 0),
+      m_long_start(static_cast<std::size_t>(segments) + 1, 0) {}
+
+bool RunLengths::finish(const std::function<std::uint32_t(int, NodeIndex)>& long_length) {
+  m_long.clear();
+  const std::size_t segments = m_long_start.size() - 1;
+  for (std::size_t s = 0; s < segments; ++s) {
+    std::uint64_t start = 0;
+    for (std::size_t r = 0; r < m_rows; ++r) {
+      if (r % k_run_block == 0)
+        m_block_start[s * blocks() + r / k_run_block] = static_cast<std::uint32_t>(start);
+      std::uint32_t n = m_length[s * m_rows + r];
+      if (n == k_long_run) {
+        n = long_length(static_cast<int>(s), static_cast<NodeIndex>(r));
+        m_long.push_back({static_cast<NodeIndex>(r), n});
+      }
       start += n;
+      if (start > UINT32_MAX) return false;
     }
-    if (rows % k_run_block == 0) m_block_start[s * blocks() + rows / k_run_block] = start;
+    if (m_rows % k_run_block == 0)
+      m_block_start[s * blocks() + m_rows / k_run_block] = static_cast<std::uint32_t>(start);
     m_long_start[s + 1] = m_long.size();
   }
+  return true;
+}
+
+RunLengths::RunLengths(const std::vector<std::uint32_t>& counts, int segments, std::size_t rows)
+    : RunLengths(segments, rows) {
+  for (int s = 0; s < segments; ++s) {
+    for (std::size_t r = 0; r < rows; ++r)
+      set(s, static_cast<NodeIndex>(r), counts[static_cast<std::size_t>(s) * rows + r]);
+  }
+  const bool fits = finish([&](int s, NodeIndex r) {
+    return counts[static_cast<std::size_t>(s) * rows + static_cast<std::size_t>(r)];
+  });
+  if (!fits) throw ParameterError("run lengths", "a segment of 2^32 entries or more", "< 2^32");
 }
 
 RunWalk RunLengths::walk(int s, NodeIndex r) const {

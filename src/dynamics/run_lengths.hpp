@@ -9,6 +9,7 @@
 // of long runs, in row order, that the walk steps through as it meets them.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "network/network.hpp"
@@ -53,9 +54,19 @@ struct RunWalk {
 class RunLengths {
  public:
   RunLengths() = default;
-  /// From the run lengths counts[s x rows + r] of `segments` segments of `rows` rows; each
-  /// segment's total must be below 2^32 (ColumnSegments checks it first). Runs on its own threads
-  /// (outside a team).
+  /// Built in two steps, so that no 4-byte length is held a run: every length set (set, from
+  /// any thread for distinct runs), then finish. Until then, `segments` x `rows` empty runs.
+  RunLengths(int segments, std::size_t rows);
+  /// Row r's run in segment s has n entries.
+  void set(int s, NodeIndex r, std::uint32_t n) {
+    m_length[static_cast<std::size_t>(s) * m_rows + static_cast<std::size_t>(r)] =
+        n >= k_long_run ? k_long_run : static_cast<std::uint8_t>(n);
+  }
+  /// The block starts and the list of long runs, whose lengths long_length(s, r) gives again
+  /// (they are rare: none in ER at N = 10^6). False, and nothing usable, where a segment holds
+  /// 2^32 entries or more (the starts are 32-bit). Ordered: on the calling thread.
+  [[nodiscard]] bool finish(const std::function<std::uint32_t(int, NodeIndex)>& long_length);
+  /// Both steps from the lengths counts[s x rows + r] (tests).
   RunLengths(const std::vector<std::uint32_t>& counts, int segments, std::size_t rows);
 
   /// The walk of segment s from row r on (0 <= r <= rows).

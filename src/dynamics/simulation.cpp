@@ -428,6 +428,9 @@ std::int64_t Run::chunk_end(std::int64_t left) const {
 }
 
 SimulationResult Run::execute() {
+  // Before the force's first evaluation, which may take the network's column indices
+  // (NetworkForce::take_columns) that the content hash reads.
+  if (!m_params.checkpoint_path.empty()) run_fingerprint();
   m_stepper->set_state(
       initial_state(m_network.first_row(), m_network.local_size(), m_params.replicas));
   const bool resuming = m_params.resume && !m_params.checkpoint_path.empty() &&

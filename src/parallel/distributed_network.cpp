@@ -24,6 +24,16 @@ const DistributedNetwork::Impl& require_rows(const DistributedNetwork::Impl& imp
   return impl;
 }
 
+// The stored rows with their column indices, which release_columns may have given away.
+const DistributedNetwork::Impl& require_columns(const DistributedNetwork::Impl& impl,
+                                                const char* what) {
+  if (require_rows(impl, what).columns_released) {
+    throw ParameterError(what, "the network's column indices were given to the sparse force",
+                         "a network whose column indices were not released (release_columns)");
+  }
+  return impl;
+}
+
 template <class T>
 T sum_over_ranks(const Teuchos::Comm<int>& comm, T local) {
   T global{};
@@ -81,6 +91,7 @@ class AdjacencyOperator final : public TpetraOperator {
 
   void apply(const TpetraMultiVector& X, TpetraMultiVector& Y, Teuchos::ETransp /*mode*/,
              double alpha, double beta) const override {
+    require_columns(m_impl, "the adjacency operator");  // one made before release_columns
     const size_t width = X.getNumVectors();
     if (!X.isConstantStride() || !Y.isConstantStride()) {
       // A view of chosen columns: the host view below would index the parent's columns, so
@@ -181,7 +192,7 @@ const DistributedNetwork::Impl& tpetra_impl(const DistributedNetwork& network) {
 }
 
 Teuchos::RCP<const TpetraOperator> adjacency_operator(const DistributedNetwork& network) {
-  const auto& impl = require_rows(tpetra_impl(network), "the adjacency operator");
+  const auto& impl = require_columns(tpetra_impl(network), "the adjacency operator");
   if (impl.op.is_null()) impl.op = Teuchos::rcp(new AdjacencyOperator(impl));
   return impl.op;
 }
@@ -249,7 +260,16 @@ std::vector<double> DistributedNetwork::gather(const std::vector<double>& x_loca
 }
 
 const DistributedNetwork::LocalAdjacency& DistributedNetwork::local_adjacency() const {
-  return require_rows(*m_impl, "DistributedNetwork::local_adjacency").adjacency;
+  return require_columns(*m_impl, "DistributedNetwork::local_adjacency").adjacency;
+}
+
+std::vector<NodeIndex> DistributedNetwork::release_columns() {
+  auto& impl = *m_impl;
+  require_columns(impl, "DistributedNetwork::release_columns");
+  impl.columns_released = true;
+  std::vector<NodeIndex> cols;
+  cols.swap(impl.adjacency.cols);  // leaves the rows' cols empty, as documented
+  return cols;
 }
 
 NodeIndex DistributedNetwork::global_column(NodeIndex c) const {

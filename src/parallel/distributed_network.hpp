@@ -5,12 +5,15 @@
 // own rows and the ghost nodes its rows reference, in ascending global order); a Tpetra::Map
 // describes the row blocks and a Tpetra::Import fills the ghost values. The force kernel reads
 // that CSR directly, and A v products (the eigensolver's Tpetra operator, apply) run on it too:
-// one copy of the structure, 4 bytes per stored entry (+ 8 when weighted) + 8 per row.
+// one copy of the structure, 4 bytes per stored entry (+ 8 when weighted) + 8 per row. A run
+// that needs nothing else may hand the column indices to the sparse force, which holds them
+// in its own layout (release_columns).
 // Trilinos types stay behind the pimpl: only distributed_network_impl.hpp names them.
 //
 // The complete graph is held implicitly: only the row blocks (the Map), no rows; what needs
 // stored rows (apply, local_adjacency, import_columns, the eigensolver) refuses it, and its
-// callers use the closed forms of network/complete_graph.hpp and the rank-one force instead.
+// callers use the closed forms of network/complete_graph.hpp and the rank-one force instead;
+// what needs the column indices refuses a network that released them, likewise.
 #include <memory>
 #include <vector>
 
@@ -72,8 +75,16 @@ class DistributedNetwork {
     std::vector<double> weights;
     NodeIndex columns = 0;  ///< size of the column space
   };
-  /// The stored rows themselves (no copy): valid while this object lives.
+  /// The stored rows themselves (no copy): valid while this object lives. Throws once the
+  /// column indices were released.
   const LocalAdjacency& local_adjacency() const;
+  /// Gives this rank's column indices away, for a run that reads the network only through its
+  /// sparse force, which then holds them in its own layout and frees them
+  /// (NetworkForce::take_columns): 4 bytes per stored entry less at the peak. A reference that
+  /// local_adjacency() returned before keeps row_ptr, weights and columns, its cols empty; what
+  /// reads the column indices afterwards (local_adjacency, apply, the eigensolver's operator,
+  /// the content hash) throws ParameterError. Not collective.
+  std::vector<NodeIndex> release_columns();
   /// Global index of column-space entry c (0 <= c < LocalAdjacency::columns).
   NodeIndex global_column(NodeIndex c) const;
   /// Every column-space entry's global index, ascending.

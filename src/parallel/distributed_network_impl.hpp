@@ -23,10 +23,11 @@ struct DistributedNetwork::Impl {
   Teuchos::RCP<const TpetraMap> map;  ///< the row blocks
   bool stores_rows = false;           ///< false: the complete graph held implicitly
   NodeIndex first_row = 0;
-  EdgeOffset nnz = 0;         ///< over all ranks (the complete graph's n (n - 1) [+ n])
-  EdgeOffset self_loops = 0;  ///< over all ranks
-  bool weighted = false;      ///< over all ranks
-  LocalAdjacency adjacency;   ///< this rank's rows, columns in the column space
+  EdgeOffset nnz = 0;             ///< over all ranks (the complete graph's n (n - 1) [+ n])
+  EdgeOffset self_loops = 0;      ///< over all ranks
+  bool weighted = false;          ///< over all ranks
+  LocalAdjacency adjacency;       ///< this rank's rows, columns in the column space
+  bool columns_released = false;  ///< adjacency.cols given away (release_columns)
   Teuchos::RCP<const TpetraMap> column_map;         ///< ascending global order
   Teuchos::RCP<const TpetraImport> row_to_columns;  ///< rows -> column space
   bool identity_import = false;                     ///< every rank's column space is its own rows

@@ -13,9 +13,12 @@
 #include "dynamics/column_segments.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/network_force.hpp"
+#include "dynamics/simulation.hpp"
 #include "dynamics/team.hpp"
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
+#include "parallel/network_content_hash.hpp"
+#include "support/simulation_runs.hpp"
 #include "support/small_networks.hpp"
 
 using namespace hmfnet;
@@ -181,6 +184,109 @@ TEST_CASE("runs of 255 entries and more (hubs) give the unblocked force's bits [
       CHECK(same_bits(cut, unblocked));
     }
   }
+}
+
+TEST_CASE("segments that take the CSR's column indices: the same cut, the indices put back",
+          "[column_segments]") {
+  const Network net = erdos_renyi({603, 0.025, 17});
+  for (const NodeIndex width : {1, 64, 577}) {
+    std::vector<NodeIndex> taken = net.cols();
+    const ColumnSegments copy(net.row_ptr(), net.cols(), net.size(), width);
+    const ColumnSegments cut = ColumnSegments::taking(net.row_ptr(), taken, net.size(), width);
+    INFO("width " << width << ", " << cut.count() << " segments");
+    CHECK(cut.count() > 1);
+    CHECK(taken.empty());
+    CHECK(cut.bytes() == copy.bytes());
+    CHECK(copy.csr_columns() == net.cols());
+    CHECK(cut.csr_columns() == net.cols());
+  }
+  // Nothing to cut (one segment, or rows not sorted): the indices stay where they were.
+  std::vector<NodeIndex> whole = net.cols();
+  CHECK(ColumnSegments::taking(net.row_ptr(), whole, net.size(), net.size()).count() == 1);
+  CHECK(whole == net.cols());
+  std::vector<NodeIndex> unsorted = net.cols();
+  std::swap(unsorted[0], unsorted[1]);
+  const std::vector<NodeIndex> before = unsorted;
+  CHECK(ColumnSegments::taking(net.row_ptr(), unsorted, net.size(), 64).count() == 1);
+  CHECK(unsorted == before);
+}
+
+TEST_CASE("segments that take the indices give their pages back as they go [ER N=30000, 2 threads]",
+          "[column_segments]") {
+  // ~1.2 M entries (4.8 MB of indices): each of two threads passes the 1 MiB step of the page
+  // release twice, from a start that is not on a page boundary.
+  const Network net = erdos_renyi({30'000, 0.0013, 5});
+  REQUIRE(net.cols().size() > 1'000'000);
+  const Threads scope(2);
+  std::vector<NodeIndex> taken = net.cols();
+  const ColumnSegments cut = ColumnSegments::taking(net.row_ptr(), taken, net.size(), 2000);
+  CHECK(cut.count() == 15);
+  CHECK(taken.empty());
+  const bool put_back = cut.csr_columns() == net.cols();  // (a failure prints no 10^6 values)
+  CHECK(put_back);
+  const DistributedNetwork d(net);
+  DistributedNetwork taker(net);
+  NetworkForce force(taker, ForcePrecision::float64, 2000);
+  force.take_columns(taker);
+  for (const int replicas : {1, 3}) {
+    const RotorState s = state(d, replicas);
+    const Evaluation unblocked = evaluate(d, ForcePrecision::float64, k_unsegmented, s);
+    Evaluation e;
+    force.prepare(s, e.g, e.sums);
+    in_team([&] { force.evaluate(s, e.g, e.sums); });
+    e.y = force.local_fields();
+    INFO("B = " << replicas);
+    CHECK(same_bits(e, unblocked));
+  }
+}
+
+TEST_CASE("a force that takes the network's column indices: the same run, resumed in a new one",
+          "[column_segments]") {
+  // As the CLI runs: each process reads the network, and its force takes the column indices
+  // when it cuts them (width 29: 11 segments on one rank). Stopped after 170 steps with a
+  // checkpoint, then resumed by a second network and force: the results equal an uninterrupted
+  // unblocked run's bit for bit (the checkpoint's content hash taken before the indices went).
+  const Network net = erdos_renyi({300, 0.05, 6});
+  SimulationParameters p = test::short_run();
+  p.node_data = true;
+  DistributedNetwork reference(net);
+  NetworkForce unblocked(reference, ForcePrecision::float64, k_unsegmented);
+  const SimulationResult whole = simulate(reference, net.degrees(), unblocked, p);
+
+  p.checkpoint_path = test::temp_path("hmfnet_test_taken_columns");
+  test::remove_on_root(p.checkpoint_path);
+  p.checkpoint_seconds = 0.0;
+  p.resume = true;
+  SimulationResult last;
+  for (const std::int64_t stop : {170, 0}) {
+    DistributedNetwork d(net);
+    NetworkForce force(d, ForcePrecision::float64, 29);
+    NetworkForce other(d, ForcePrecision::float64, k_unsegmented);  // made before the take
+    force.take_columns(d);
+    p.stop_after_steps = stop;
+    last = simulate(d, net.degrees(), force, p);
+    CHECK(force.segments() > 1);
+    Evaluation e;
+    CHECK_THROWS_WITH(other.prepare(state(d, 1), e.g, e.sums), Catch::Contains("given to another"));
+    // What needs the indices now says where they went.
+    CHECK_THROWS_WITH(d.local_adjacency(), Catch::Contains("given to the sparse force"));
+    CHECK_THROWS_WITH(network_content_hash(d), Catch::Contains("given to the sparse force"));
+    std::vector<double> y;
+    CHECK_THROWS_WITH(
+        d.apply(std::vector<double>(static_cast<std::size_t>(d.local_size()), 1.0), y),
+        Catch::Contains("given to the sparse force"));
+    CHECK_THROWS_AS(force.take_columns(reference), ParameterError);
+  }
+  REQUIRE(last.resumed);
+  REQUIRE(last.points.size() == whole.points.size());
+  for (std::size_t k = 0; k < whole.points.size(); ++k) {
+    CHECK(last.points[k].R_mean == whole.points[k].R_mean);
+    CHECK(last.points[k].energy_rel_error_max == whole.points[k].energy_rel_error_max);
+    CHECK(last.points[k].R_node == whole.points[k].R_node);
+    CHECK(last.points[k].rotor_theta_bar == whole.points[k].rotor_theta_bar);
+  }
+  CHECK(last.series.energy == whole.series.energy);
+  test::remove_on_root(p.checkpoint_path);
 }
 
 TEST_CASE("segmented leap-frog trajectories equal unblocked ones bit for bit [ER N=400, 40 steps]",
