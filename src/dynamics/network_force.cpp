@@ -295,9 +295,9 @@ template <typename T>
   }
 }
 
-// to = from in float32; `to` sized by the caller (team.hpp: no allocation inside a team).
-void narrow(const std::vector<double>& from, std::vector<float>& to) {
-  const std::size_t n = from.size();
+// to[0, n) = from[0, n) in float32; `to` sized by the caller (team.hpp: no allocation inside a
+// team).
+void narrow(const double* from, std::size_t n, float* to) {
 #pragma omp for schedule(static)
   for (std::size_t k = 0; k < n; ++k) to[k] = static_cast<float>(from[k]);
 }
@@ -316,7 +316,7 @@ NetworkForce::NetworkForce(const DistributedNetwork& network, ForcePrecision pre
   if (m_precision == ForcePrecision::float32) {
     m_weights_f32.resize(m_adjacency.weights.size());
 #pragma omp parallel
-    narrow(m_adjacency.weights, m_weights_f32);
+    narrow(m_adjacency.weights.data(), m_adjacency.weights.size(), m_weights_f32.data());
   }
 }
 
@@ -439,7 +439,8 @@ void NetworkForce::evaluate(const RotorState& state, std::vector<double>& g, For
   } else {
     // The gathered table in float32 (one narrowing pass over the columns, O(columns x B), next
     // to the O(nnz x B) gather it halves).
-    narrow(m_identity_import ? m_owned_cs : m_column_cs, m_column_f32);
+    const auto& wide = m_identity_import ? m_owned_cs : m_column_cs;
+    narrow(wide.data(), wide.size(), m_column_f32.data());
     run_rows(m_weights_f32.empty() ? nullptr : m_weights_f32.data(), m_column_f32.data(),
              state.rows, nb, g);
   }

@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/cache_aligned.hpp"
 #include "dynamics/column_segments.hpp"
 #include "dynamics/coupling_force.hpp"
 #include "dynamics/force_precision.hpp"
@@ -77,16 +78,17 @@ class NetworkForce : public CouplingForce {
   const DistributedNetwork::LocalAdjacency& m_adjacency;  ///< the network's own rows
   EdgeOffset m_nnz;                                       // stored entries of this rank's rows
   double m_inverse_n;
-  bool m_identity_import;           // one rank: the column space is the owned block
-  std::vector<double> m_owned_cs;   // rows x replicas x [cos, sin]
-  std::vector<double> m_column_cs;  // columns x replicas x [cos, sin]
-  std::vector<double> m_y;          // rows x replicas x [Re y, Im y]
-  std::vector<double> m_terms;      // rows x replicas x [|y_n|, Re(e^{-i theta_n} y_n)]
-  std::vector<double> m_term_sums;  // replicas x [sum |y_n|, sum Re(e^{-i theta_n} y_n)]
+  bool m_identity_import;  // one rank: the column space is the owned block
+  // The gathered tables start on a cache line: a record of 2B values in as few lines as it can.
+  CacheAlignedVector<double> m_owned_cs;   // rows x replicas x [cos, sin]
+  CacheAlignedVector<double> m_column_cs;  // columns x replicas x [cos, sin]
+  std::vector<double> m_y;                 // rows x replicas x [Re y, Im y]
+  std::vector<double> m_terms;             // rows x replicas x [|y_n|, Re(e^{-i theta_n} y_n)]
+  std::vector<double> m_term_sums;         // replicas x [sum |y_n|, sum Re(e^{-i theta_n} y_n)]
   OrderedColumnSums m_sums;
   ForcePrecision m_precision;
-  std::vector<float> m_weights_f32;  // float32: the stored weights (empty for 0/1)
-  std::vector<float> m_column_f32;   // float32: the gathered table
+  std::vector<float> m_weights_f32;        // float32: the stored weights (empty for 0/1)
+  CacheAlignedVector<float> m_column_f32;  // float32: the gathered table
   NodeIndex m_segment_request;
   NodeIndex m_segment_width = -1;   // the width m_segments was cut with (-1: not yet)
   NodeIndex m_segmented_rows = -1;  // the shape prepare_segments last decided for

@@ -1,0 +1,47 @@
+#pragma once
+// Arrays that start on a cache line. The sparse force gathers whole records of 2B values from
+// its [cos, sin] table; a std::vector of that size starts 16 bytes past a page (glibc's chunk
+// header), so a record of 64 bytes (float64 with 4 replicas, float32 with 8) lay across two
+// lines and one of 128 bytes across three. On a line, each record takes ceil(bytes / 64) lines,
+// as the step's bound counts them (bench/bench_access_lines.cpp). Measured on the Intel Xeon
+// (docs/performance.md, "Cache lines in the bound"): the step's speed unchanged within the
+// noise; the carried partial sums, aligned too, ran 3-8% slower at N = 10^6 and stay unaligned.
+#include <cstddef>
+#include <new>
+#include <vector>
+
+namespace hmfnet {
+
+inline constexpr std::size_t k_cache_line_bytes = 64;
+
+/// std::allocator's interface, every block aligned to k_cache_line_bytes.
+template <typename T>
+struct CacheAlignedAllocator {
+  using value_type = T;
+
+  CacheAlignedAllocator() = default;
+  template <typename U>
+  explicit CacheAlignedAllocator(const CacheAlignedAllocator<U>& /*other*/) {}
+
+  T* allocate(std::size_t n) {
+    return static_cast<T*>(::operator new (n * sizeof(T), std::align_val_t{k_cache_line_bytes}));
+  }
+  void deallocate(T* p, std::size_t /*n*/) noexcept {
+    ::operator delete (p, std::align_val_t{k_cache_line_bytes});
+  }
+
+  template <typename U>
+  bool operator==(const CacheAlignedAllocator<U>& /*other*/) const {
+    return true;
+  }
+  template <typename U>
+  bool operator!=(const CacheAlignedAllocator<U>& /*other*/) const {
+    return false;
+  }
+};
+
+/// A std::vector whose data() starts on a cache line.
+template <typename T>
+using CacheAlignedVector = std::vector<T, CacheAlignedAllocator<T>>;
+
+}  // namespace hmfnet
