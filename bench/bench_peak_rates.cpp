@@ -192,6 +192,7 @@ void StreamRead(benchmark::State& state) {
       const std::size_t first = groups * t / n * 64, last = groups * (t + 1) / n * 64;
       for (std::size_t pass = 0; pass < passes; ++pass) {
         total += stream(index.data() + first, last - first);
+        benchmark::DoNotOptimize(total);  // every pass read, none hoisted as a pure call
       }
     }
     benchmark::DoNotOptimize(total);
@@ -208,7 +209,7 @@ BENCHMARK(L1LoadAdd)->ArgsProduct({{16, 32, 64}, {1, 2}})->MinWarmUpTime(0.3)->U
 // the line ceilings: 256 KiB, beyond every L1d and within every L2 measured so far (48 and 32
 // KiB; 2 MiB and 512 KiB), the best rate of lines into L1; 16 MiB, beyond those L2s, into L2.
 // Warmed up first: from an idle core the 256 KiB read ran at half its rate for ~0.1 s (95 against
-// 175 GB/s, Intel Xeon), and a ceiling measured low would let code run above it.
+// 169-176 GB/s, Intel Xeon), and a ceiling measured low would let code run above it.
 BENCHMARK(StreamRead)
     ->ArgsProduct({{256, 3906, 16384, 390625}, {1, 2}})
     ->MinWarmUpTime(0.3)

@@ -20,8 +20,9 @@ struct CacheAlignedAllocator {
   using value_type = T;
 
   CacheAlignedAllocator() = default;
+  // Implicit, as std::allocator's: a container may copy-initialise its rebound allocator.
   template <typename U>
-  explicit CacheAlignedAllocator(const CacheAlignedAllocator<U>& /*other*/) {}
+  CacheAlignedAllocator(const CacheAlignedAllocator<U>& /*other*/) {}
 
   T* allocate(std::size_t n) {
     return static_cast<T*>(::operator new (n * sizeof(T), std::align_val_t{k_cache_line_bytes}));
