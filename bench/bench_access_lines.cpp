@@ -155,11 +155,9 @@ class LineCounter {
   std::int64_t m_lines = 0;
 };
 
-// Bytes of a stream of `bytes` read once per pass, `passes` times, that a cache of `capacity`
-// bytes cannot keep between passes.
-double streamed(double bytes, double passes, double capacity) {
-  return passes * std::max(0.0, bytes - capacity);
-}
+// The bytes of `bytes` read in a pass that a cache of `capacity` bytes cannot have kept from
+// before it.
+double beyond(double bytes, double capacity) { return std::max(0.0, bytes - capacity); }
 
 struct Shape {
   const Network* net;
@@ -301,8 +299,8 @@ void AccessLines(benchmark::State& state) {
           [&](double carry) {
             in_l1.end_pass();
             in_l2.end_pass();
-            carry_l1 += std::max(0.0, carry - static_cast<double>(l1));
-            carry_l2 += std::max(0.0, carry - static_cast<double>(l2_reach));
+            carry_l1 += beyond(carry, static_cast<double>(l1));
+            carry_l2 += beyond(carry, static_cast<double>(l2_reach));
           });
       const double thread_rows = static_cast<double>(rows) / threads;
       const double index = static_cast<double>(entries) * static_cast<double>(index_entry) +
@@ -311,9 +309,9 @@ void AccessLines(benchmark::State& state) {
       const auto line_bytes = [](std::int64_t count) {
         return static_cast<double>(count) * static_cast<double>(k_line);
       };
-      l1_fill += line_bytes(in_l1.lines()) + streamed(index, 1, static_cast<double>(l1)) + carry_l1;
+      l1_fill += line_bytes(in_l1.lines()) + beyond(index, static_cast<double>(l1)) + carry_l1;
       l2_fill +=
-          line_bytes(in_l2.lines()) + streamed(index, 1, static_cast<double>(l2_reach)) + carry_l2;
+          line_bytes(in_l2.lines()) + beyond(index, static_cast<double>(l2_reach)) + carry_l2;
     }
   }
   state.counters["l1_fill_bytes"] = l1_fill;
