@@ -36,6 +36,8 @@
 
 #include "cached_network.hpp"
 #include "dynamics/column_segments.hpp"
+#include "dynamics/sincos.hpp"
+#include "dynamics/wide_rows.hpp"
 
 using namespace hmfnet;
 
@@ -236,9 +238,16 @@ void walk_thread(const Shape& s, int thread, int threads,
   }
 }
 
-// rows_kernel's partials per pass (network_force.cpp partials_per_pass): the live accumulators
-// within 128 bytes.
-int partials_per_pass(std::size_t record) { return record <= 32 ? 4 : record <= 64 ? 2 : 1; }
+// The partials one walk of a row forms in the unblocked kernel this CPU runs: the wide loops'
+// (dynamics/wide_rows.hpp) where they serve, else rows_kernel's (network_force.cpp
+// partials_per_pass: the live accumulators within 128 bytes).
+template <typename T>
+int partials_per_pass(int replicas) {
+  const SincosIsa isa = sincos_isa();
+  if (wide_rows_serve<T>(replicas, isa)) return wide_rows_partials<T>(replicas, isa);
+  const std::size_t record = 2 * static_cast<std::size_t>(replicas) * sizeof(T);
+  return record <= 32 ? 4 : record <= 64 ? 2 : 1;
+}
 
 // Belady's own example (IBM Systems Journal 5 (1966) 78): 1 2 3 4 1 2 5 1 2 3 4 5 takes 7
 // misses in 3 lines and 6 in 4 under optimal replacement.
@@ -266,7 +275,10 @@ void AccessLines(benchmark::State& state) {
                                                   available_memory_bytes());
   const int segments =
       width >= rows ? 1 : static_cast<int>((static_cast<std::int64_t>(rows) + width - 1) / width);
-  const Shape shape{&net, record, partials_per_pass(record), width, segments};
+  const int partials = value == sizeof(double)
+                           ? partials_per_pass<double>(static_cast<int>(replicas))
+                           : partials_per_pass<float>(static_cast<int>(replicas));
+  const Shape shape{&net, record, partials, width, segments};
   const std::size_t l1 = l1_cache_bytes(), l2 = l2_cache_bytes();
   // What a core holds without going to L3: its L1 and L2 together, as an L2 need not hold what
   // L1 does (Intel's is not inclusive).

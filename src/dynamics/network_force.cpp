@@ -9,29 +9,15 @@
 
 #include "core/error.hpp"
 #include "dynamics/ordered_sum.hpp"
+#include "dynamics/row_kernel_args.hpp"
 #include "dynamics/segment_runs.hpp"
 #include "dynamics/sincos.hpp"
 #include "dynamics/team.hpp"
+#include "dynamics/wide_rows.hpp"
 
 namespace hmfnet {
 
 namespace {
-
-// T: the storage of the gathered [cos, sin] table and the weights, and the type of the per-row
-// accumulation (float32 halves the bytes the gather touches); the owned rows' cos and sin and
-// the outputs stay double.
-template <typename T>
-struct RowKernelArgs {
-  const EdgeOffset* row_ptr;
-  const NodeIndex* cols;
-  const T* weights;  // nullptr: 0/1 network
-  const T* column_cs;
-  const double* owned_cs;
-  double inverse_n;
-  double* g;
-  double* y;
-  double* terms;  // rows x replicas x [|y_n|, Re(e^{-i theta_n} y_n)]
-};
 
 // Replica count B fixed at compile time so the inner loops unroll and vectorise; `runtime_b`
 // serves other counts. Weighted is a template flag so the 0/1 loop reads no values.
@@ -78,20 +64,7 @@ void rows_kernel(const RowKernelArgs<T>& a, NodeIndex rows, int runtime_b) {
       for (std::size_t c = 0; c < C; ++c)
         for (int b = 0; b < 2 * nb; ++b) partial[static_cast<std::size_t>(pass) + c][b] = acc[c][b];
     }
-    const double* o = a.owned_cs + 2 * static_cast<std::ptrdiff_t>(r) * nb;
-    const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(r) * nb;
-    for (int b = 0; b < nb; ++b) {
-      const std::size_t re = 2 * static_cast<std::size_t>(b), im = re + 1;
-      const T(&p)[4][k_width] = partial;
-      const double yc = (p[0][re] + p[1][re]) + (p[2][re] + p[3][re]);
-      const double ys = static_cast<double>((p[0][im] + p[1][im]) + (p[2][im] + p[3][im]));
-      const double c = o[re], s = o[im];
-      a.g[base + b] = a.inverse_n * (c * ys - s * yc);
-      a.y[2 * (base + b)] = yc;
-      a.y[2 * (base + b) + 1] = ys;
-      a.terms[2 * (base + b)] = std::sqrt(yc * yc + ys * ys);
-      a.terms[2 * (base + b) + 1] = c * yc + s * ys;
-    }
+    finish_row(a, r, &partial[0][0], k_width, nb);
   }
 }
 
@@ -155,27 +128,6 @@ struct SegmentArgs {
   std::uint32_t* cursor;
 };
 
-// Row r's outputs from its four carried partial sums of every replica (partial j of value v at
-// p[j * stride + v]), combined as rows_kernel combines them: (s0 + s1) + (s2 + s3) in T.
-template <typename T>
-inline void finish_row(const RowKernelArgs<T>& a, NodeIndex r, const T* p, std::size_t stride,
-                       int nb) {
-  const double* o = a.owned_cs + 2 * static_cast<std::ptrdiff_t>(r) * nb;
-  const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(r) * nb;
-  for (int b = 0; b < nb; ++b) {
-    const std::size_t re = 2 * static_cast<std::size_t>(b), im = re + 1;
-    const double yc = (p[re] + p[stride + re]) + (p[2 * stride + re] + p[3 * stride + re]);
-    const double ys =
-        static_cast<double>((p[im] + p[stride + im]) + (p[2 * stride + im] + p[3 * stride + im]));
-    const double c = o[re], s = o[im];
-    a.g[base + b] = a.inverse_n * (c * ys - s * yc);
-    a.y[2 * (base + b)] = yc;
-    a.y[2 * (base + b) + 1] = ys;
-    a.terms[2 * (base + b)] = std::sqrt(yc * yc + ys * ys);
-    a.terms[2 * (base + b) + 1] = c * yc + s * ys;
-  }
-}
-
 // The rows in k_carry_panels panels, each walked once per segment before the next panel, so the
 // carry holds one panel's partials (column_segments.hpp). Within a panel each thread walks the
 // same block of rows in every segment, so the carry needs no barrier between segments; one
@@ -190,6 +142,8 @@ void segmented_rows_kernel(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, 
   const auto threads = static_cast<std::int64_t>(omp_get_num_threads());
   const auto thread = static_cast<std::int64_t>(omp_get_thread_num());
   const NodeIndex panel = carried_rows(rows);
+  const SincosIsa isa = sincos_isa();
+  const bool wide = wide_rows_serve<T>(nb, isa);
   for (std::int64_t p0 = 0; p0 < rows; p0 += panel) {
     const std::int64_t panel_rows = std::min<std::int64_t>(panel, rows - p0);
     const auto r0 = static_cast<NodeIndex>(p0 + panel_rows * thread / threads);
@@ -208,7 +162,9 @@ void segmented_rows_kernel(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, 
                                    seg == 0,
                                    seg + 1 == count,
                                    static_cast<NodeIndex>(p0)};
-      if constexpr (!Weighted && (B == 1 || B == 2)) {
+      if (wide) {
+        wide_segment_runs(pass, a.weights, nb, r0, r1, isa);
+      } else if constexpr (!Weighted && (B == 1 || B == 2)) {
         add_segment_runs(pass, nb, r0, r1, true);
       } else {
         scalar_segment_runs<T, B, Weighted, I>(pass, a.weights, nb, r0, r1);
@@ -275,6 +231,11 @@ void dispatch(const RowKernelArgs<T>& a, NodeIndex rows, int b) {
 
 template <typename T>
 void run_kernel(const RowKernelArgs<T>& a, NodeIndex rows, int b) {
+  const SincosIsa isa = sincos_isa();
+  if (wide_rows_serve<T>(b, isa)) {
+    wide_rows(a, rows, b, isa);
+    return;
+  }
   if (a.weights == nullptr) {
     dispatch<T, false>(a, rows, b);
   } else {

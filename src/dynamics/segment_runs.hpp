@@ -35,20 +35,32 @@ inline void add_record(T* acc, const T* q, T w, int n) {
   }
 }
 
+/// How the scalar loop adds one record: add_record over its n values (wide_rows.cpp has the same
+/// in AVX2 and AVX-512 registers).
+struct ScalarRecordAdd {
+  template <typename T, int B, bool Weighted>
+  static void add(T* acc, const T* q, T w, int n) {
+    add_record(acc, q, w, n);
+  }
+};
+
 /// Adds entries place .. place + n - 1 of a row whose first `full` entries precede its last
 /// d mod 4 to the row's carried partials p (partial j of value v at p[j x record + v]): entry
 /// k < full into partial k mod 4, the others into partial 0, as the unblocked kernels sum them.
 /// The scalar loop, for every replica count and for weighted networks: one loop whatever the
 /// run's first place (a rotation of four register accumulators with its remainder branches
-/// measured no faster, bench SegmentedStep, Intel Xeon).
-template <typename T, int B, bool Weighted, typename I>
-inline void add_run(T* p, const T* table, const I* cols, const T* w, EdgeOffset place, EdgeOffset n,
-                    EdgeOffset full, int nb) {
+/// measured no faster, bench SegmentedStep, Intel Xeon). Always inlined: a caller compiled for
+/// a wider instruction set (wide_rows.cpp) compiles it in that set.
+template <typename T, int B, bool Weighted, typename I, typename Add = ScalarRecordAdd>
+[[gnu::always_inline]] inline void add_run(T* p, const T* table, const I* cols, const T* w,
+                                           EdgeOffset place, EdgeOffset n, EdgeOffset full,
+                                           int nb) {
   const auto record = 2 * static_cast<std::ptrdiff_t>(B > 0 ? B : nb);
   const EdgeOffset split = std::clamp<EdgeOffset>(full - place, 0, n);
   for (EdgeOffset i = 0; i < n; ++i) {
     T* acc = i < split ? p + ((place + i) & 3) * record : p;
-    add_record(acc, table + record * cols[i], Weighted ? w[i] : T(1), static_cast<int>(record));
+    Add::template add<T, B, Weighted>(acc, table + record * cols[i], Weighted ? w[i] : T(1),
+                                      static_cast<int>(record));
   }
 }
 
@@ -76,10 +88,11 @@ struct SegmentPass {
 
 /// Rows [r0, r1) of one segment in the scalar loop, for every replica count (B > 0 fixed at
 /// compile time, 0: nb at run time) and for weighted rows (`weights`: the CSR's, nullptr on a
-/// 0/1 network).
-template <typename T, int B, bool Weighted, typename I>
-inline void scalar_segment_runs(const SegmentPass<T, I>& pass, const T* weights, int nb,
-                                NodeIndex r0, NodeIndex r1) {
+/// 0/1 network); each record added by Add (wide_rows.cpp: the same loop in wide registers).
+template <typename T, int B, bool Weighted, typename I, typename Add = ScalarRecordAdd>
+[[gnu::always_inline]] inline void scalar_segment_runs(const SegmentPass<T, I>& pass,
+                                                       const T* weights, int nb, NodeIndex r0,
+                                                       NodeIndex r1) {
   const std::size_t stride = 8 * static_cast<std::size_t>(B > 0 ? B : nb);
   RunWalk walk = pass.runs->walk(pass.segment, r0);
   for (NodeIndex r = r0; r < r1; ++r) {
@@ -91,8 +104,8 @@ inline void scalar_segment_runs(const SegmentPass<T, I>& pass, const T* weights,
     const RunSpan run = walk.next(r);
     const EdgeOffset n = run.n;
     const T* w = Weighted ? weights + begin + place : nullptr;
-    add_run<T, B, Weighted, I>(p, pass.table, pass.cols + run.begin, w, place, n, degree / 4 * 4,
-                               nb);
+    add_run<T, B, Weighted, I, Add>(p, pass.table, pass.cols + run.begin, w, place, n,
+                                    degree / 4 * 4, nb);
     if (!pass.last) pass.cursor[slot] = static_cast<std::uint32_t>(place + n);
   }
 }

@@ -3,7 +3,9 @@
 # rank_one_force.cpp): `hmfnet simulate` on K_N without self-loops (N = 2500: two of the 2048-row
 # blocks the sums are cut into) with 16 replicas (two whole AVX-512 or AVX2 groups) and 13 (one
 # whole, one partial), on a rank-one network with unequal a_n (--force rank-one: an error, not
-# the sparse force, should its structure go undetected), and on an ER network, gives the same
+# the sparse force, should its structure go undetected), and on an ER network (9 replicas: the
+# baseline row loop; 8 in float64 and 4 in float32: the wide row loops of dynamics/wide_rows.hpp
+# in AVX-512 and AVX2, and the baseline loop under HMFNET_SINCOS_ISA=baseline), gives the same
 # --json points and results file under the widest set this CPU runs and under
 # HMFNET_SINCOS_ISA=baseline and avx2. On a CPU without AVX-512 the widest is one of the others,
 # and the comparison still holds.
@@ -27,12 +29,14 @@ with open(sys.argv[1], "w") as f:
         for j in range(i + 1):
             f.write(f"{i + 1} {j + 1} {a[i] * a[j]!r}\n")
 PY
-for case in "k.h5 16 auto" "k.h5 13 auto" "er.h5 9 auto" "rank_one.mtx 16 rank-one"; do
-  read -r net replicas force <<< "$case"
+for case in "k.h5 16 auto" "k.h5 13 auto" "er.h5 9 auto" "er.h5 8 auto" "er.h5 4 auto float32" \
+  "rank_one.mtx 16 rank-one"; do
+  read -r net replicas force precision <<< "$case"
   for isa in widest baseline avx2; do
     env_isa=()
     [ "$isa" = widest ] || env_isa=(HMFNET_SINCOS_ISA="$isa")
     env "${env_isa[@]}" "$hmfnet" simulate "$out/$net" --replicas "$replicas" --force "$force" --momenta waterbag \
+      --precision "${precision:-float64}" \
       --K-over-Kc 1.5,3 --h 0.1 --T 60 --transient 10 --seed 4 --threads 2 --record-stride 7 \
       --json --quiet -o "$out/$isa.h5" > "$out/$isa.json"
   done

@@ -14,31 +14,13 @@
 
 #include "dynamics/column_segments.hpp"
 #include "dynamics/segment_runs.hpp"
+#include "support/random_rows.hpp"
 
 using namespace hmfnet;
 
 namespace {
 
-// Sorted random rows: degrees 0 to 40 over `columns` columns.
-struct Rows {
-  std::vector<EdgeOffset> row_ptr{0};
-  std::vector<NodeIndex> cols;
-};
-
-Rows random_rows(NodeIndex rows, NodeIndex columns, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_int_distribution<int> degree(0, 40);
-  Rows out;
-  for (NodeIndex r = 0; r < rows; ++r) {
-    std::vector<char> taken(static_cast<std::size_t>(columns), 0);
-    const int d = degree(rng);
-    for (int k = 0; k < d; ++k) taken[rng() % static_cast<std::size_t>(columns)] = 1;
-    for (NodeIndex c = 0; c < columns; ++c)
-      if (taken[static_cast<std::size_t>(c)] != 0) out.cols.push_back(c);
-    out.row_ptr.push_back(static_cast<EdgeOffset>(out.cols.size()));
-  }
-  return out;
-}
+using Rows = test::RandomRows;
 
 // A [cos, sin] table of 2B values a column, with the values that IEEE addition treats apart.
 template <typename T>
@@ -100,7 +82,7 @@ void compare(const Rows& rows, const ColumnSegments& cut, const std::vector<T>& 
 
 TEST_CASE("the AVX2 segment runs add as the scalar loop does, bit for bit", "[segment_runs]") {
   const NodeIndex n = 300, columns = 240;
-  const Rows rows = random_rows(n, columns, 11);
+  const Rows rows = test::random_rows(n, columns, 11);
   if (!segment_runs_vectorised<double>(1)) WARN("no AVX2 here: scalar against scalar");
   for (const NodeIndex width : {1, 40, 97}) {  // 240 segments (most runs empty), 6 and 3
     const ColumnSegments narrow(rows.row_ptr, rows.cols, columns, width),

@@ -1,0 +1,51 @@
+#pragma once
+// What the sparse kernel's row loops share (network_force.cpp, wide_rows.cpp): the CSR and the
+// gathered table they read, the outputs they write, and how a row's four partial sums become
+// them (eq:dMomentum_dT_orderParam: g_n = (1/N) Im(e^{-i theta_n} y_n), y_n = sum_m A_nm
+// e^{i theta_m}, and the order-parameter terms |y_n| and Re(e^{-i theta_n} y_n)).
+#include <cmath>
+#include <cstddef>
+
+#include "network/network.hpp"
+
+namespace hmfnet {
+
+/// T: the storage of the gathered [cos, sin] table and the weights, and the type of the per-row
+/// accumulation (float32 halves the bytes the gather touches); the owned rows' cos and sin and
+/// the outputs stay double.
+template <typename T>
+struct RowKernelArgs {
+  const EdgeOffset* row_ptr;
+  const NodeIndex* cols;
+  const T* weights;  // nullptr: 0/1 network
+  const T* column_cs;
+  const double* owned_cs;
+  double inverse_n;
+  double* g;
+  double* y;
+  double* terms;  // rows x replicas x [|y_n|, Re(e^{-i theta_n} y_n)]
+};
+
+/// Row r's outputs from its four partial sums of every replica (partial j of value v at
+/// p[j * stride + v]), combined as (s0 + s1) + (s2 + s3) in T: every row loop ends here, so
+/// they agree bit for bit whenever their partials do.
+template <typename T>
+inline void finish_row(const RowKernelArgs<T>& a, NodeIndex r, const T* p, std::size_t stride,
+                       int nb) {
+  const double* o = a.owned_cs + 2 * static_cast<std::ptrdiff_t>(r) * nb;
+  const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(r) * nb;
+  for (int b = 0; b < nb; ++b) {
+    const std::size_t re = 2 * static_cast<std::size_t>(b), im = re + 1;
+    const double yc = (p[re] + p[stride + re]) + (p[2 * stride + re] + p[3 * stride + re]);
+    const double ys =
+        static_cast<double>((p[im] + p[stride + im]) + (p[2 * stride + im] + p[3 * stride + im]));
+    const double c = o[re], s = o[im];
+    a.g[base + b] = a.inverse_n * (c * ys - s * yc);
+    a.y[2 * (base + b)] = yc;
+    a.y[2 * (base + b) + 1] = ys;
+    a.terms[2 * (base + b)] = std::sqrt(yc * yc + ys * ys);
+    a.terms[2 * (base + b) + 1] = c * yc + s * ys;
+  }
+}
+
+}  // namespace hmfnet

@@ -1,0 +1,252 @@
+#include "dynamics/wide_rows.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include "dynamics/segment_runs.hpp"
+#include "dynamics/wide_lanes.hpp"
+
+#if defined(__x86_64__)
+#define HMFNET_WIDE_ROWS_X86 1
+#endif
+
+namespace hmfnet {
+
+namespace {
+
+#if defined(HMFNET_WIDE_ROWS_X86)
+
+// The register files: AVX-512's 32 registers of 64 bytes and AVX2's 16 of 32, half of each the
+// budget for a walk's accumulators (the rest hold loads, and the weights where there are some).
+inline constexpr std::size_t k_avx512_bytes = 64, k_avx512_budget = 16;
+inline constexpr std::size_t k_avx2_bytes = 32, k_avx2_budget = 8;
+
+// The partials one walk of a row forms: as many as keep their accumulators, `registers` each,
+// within `budget`.
+constexpr std::size_t partials_within(std::size_t registers, std::size_t budget) {
+  return 4 * registers <= budget ? 4 : 2 * registers <= budget ? 2 : 1;
+}
+
+// The shape of one version: records of 2B values of T in V-byte registers.
+template <typename T, int B, std::size_t V, std::size_t budget>
+struct Shape {
+  static constexpr std::size_t k_record = 2 * static_cast<std::size_t>(B);
+  static constexpr std::size_t k_per_register = V / sizeof(T);
+  static constexpr std::size_t k_registers = k_record / k_per_register;
+  static constexpr std::size_t k_partials = partials_within(k_registers, budget);
+  static_assert(k_record % k_per_register == 0, "a record fills whole registers");
+};
+
+// acc += w q (or q on a 0/1 network) for the record of entry e.
+template <typename T, typename S, std::size_t V, bool Weighted>
+HMFNET_LANES_INLINE void add_entry(Lanes<T, V> (&acc)[S::k_registers], const RowKernelArgs<T>& a,
+                                   EdgeOffset e) {
+  const T* q = a.column_cs + S::k_record * static_cast<std::size_t>(a.cols[e]);
+  add_lanes<T, V, S::k_record, Weighted>(acc, q, Weighted ? a.weights[e] : T(1));
+}
+
+// The row loop of one version: rows_kernel's walks, C = S::k_partials partials a walk.
+template <typename T, int B, std::size_t V, std::size_t budget, bool Weighted>
+HMFNET_LANES_INLINE void rows_body(const RowKernelArgs<T>& a, NodeIndex rows) {
+  using S = Shape<T, B, V, budget>;
+  constexpr std::size_t C = S::k_partials;
+#pragma omp for schedule(static)
+  for (NodeIndex r = 0; r < rows; ++r) {
+    const EdgeOffset begin = a.row_ptr[r], end = a.row_ptr[r + 1];
+    const EdgeOffset full = begin + (end - begin) / 4 * 4;
+    alignas(64) T partial[4][S::k_record];
+#pragma GCC unroll 4
+    for (std::size_t pass = 0; pass < 4; pass += C) {
+      Lanes<T, V> acc[C][S::k_registers] = {};  // every lane +0.0
+      for (EdgeOffset k = begin; k < full; k += 4) {
+#pragma GCC unroll 4
+        for (std::size_t c = 0; c < C; ++c)
+          add_entry<T, S, V, Weighted>(acc[c], a, k + static_cast<EdgeOffset>(pass + c));
+      }
+      if (pass == 0) {
+        for (EdgeOffset k = full; k < end; ++k) add_entry<T, S, V, Weighted>(acc[0], a, k);
+      }
+#pragma GCC unroll 4
+      for (std::size_t c = 0; c < C; ++c) std::memcpy(partial[pass + c], acc[c], sizeof acc[c]);
+    }
+    finish_row(a, r, &partial[0][0], S::k_record, B);
+  }
+}
+
+template <typename T, int B>
+inline constexpr std::size_t k_record_bytes = 2 * static_cast<std::size_t>(B) * sizeof(T);
+
+// 32 registers of 64 bytes; a record of 32 bytes takes a 32-byte register (AVX-512 has AVX2).
+template <typename T, int B, bool Weighted>
+__attribute__((target("avx512f,avx512dq"))) void rows_avx512(const RowKernelArgs<T>& a,
+                                                             NodeIndex rows) {
+  rows_body<T, B, std::min(k_avx512_bytes, k_record_bytes<T, B>), k_avx512_budget, Weighted>(a,
+                                                                                             rows);
+}
+
+// 16 registers of 32 bytes.
+template <typename T, int B, bool Weighted>
+__attribute__((target("avx2"))) void rows_avx2(const RowKernelArgs<T>& a, NodeIndex rows) {
+  rows_body<T, B, k_avx2_bytes, k_avx2_budget, Weighted>(a, rows);
+}
+
+template <typename T, int B, bool Weighted>
+void rows_in(const RowKernelArgs<T>& a, NodeIndex rows, SincosIsa isa) {
+  if constexpr (k_record_bytes<T, B> >= 32) {
+    if (isa == SincosIsa::avx512) {
+      rows_avx512<T, B, Weighted>(a, rows);
+    } else {
+      rows_avx2<T, B, Weighted>(a, rows);
+    }
+  }
+}
+
+template <typename T, bool Weighted>
+void dispatch(const RowKernelArgs<T>& a, NodeIndex rows, int replicas, SincosIsa isa) {
+  switch (replicas) {
+    case 2:
+      rows_in<T, 2, Weighted>(a, rows, isa);
+      break;
+    case 4:
+      rows_in<T, 4, Weighted>(a, rows, isa);
+      break;
+    default:
+      rows_in<T, 8, Weighted>(a, rows, isa);
+      break;
+  }
+}
+
+// The scalar segment loop's record added in registers of at most `widest` bytes.
+template <std::size_t widest>
+struct WideRecordAdd {
+  template <typename T, int B, bool Weighted>
+  static HMFNET_LANES_INLINE void add(T* acc, const T* q, T w, int /*n*/) {
+    constexpr std::size_t bytes = k_record_bytes<T, B>;
+    add_lanes_at<T, std::min(widest, bytes), 2 * static_cast<std::size_t>(B), Weighted>(acc, q, w);
+  }
+};
+
+template <typename T, int B, bool Weighted, typename I>
+__attribute__((target("avx512f,avx512dq"))) void runs_avx512(const SegmentPass<T, I>& pass,
+                                                             const T* weights, NodeIndex r0,
+                                                             NodeIndex r1) {
+  scalar_segment_runs<T, B, Weighted, I, WideRecordAdd<k_avx512_bytes>>(pass, weights, B, r0, r1);
+}
+
+template <typename T, int B, bool Weighted, typename I>
+__attribute__((target("avx2"))) void runs_avx2(const SegmentPass<T, I>& pass, const T* weights,
+                                               NodeIndex r0, NodeIndex r1) {
+  scalar_segment_runs<T, B, Weighted, I, WideRecordAdd<k_avx2_bytes>>(pass, weights, B, r0, r1);
+}
+
+template <typename T, int B, typename I>
+void runs_in(const SegmentPass<T, I>& pass, const T* weights, NodeIndex r0, NodeIndex r1,
+             SincosIsa isa) {
+  if constexpr (k_record_bytes<T, B> >= 32) {
+    const bool avx512 = isa == SincosIsa::avx512;
+    if (weights == nullptr) {
+      avx512 ? runs_avx512<T, B, false, I>(pass, weights, r0, r1)
+             : runs_avx2<T, B, false, I>(pass, weights, r0, r1);
+    } else {
+      avx512 ? runs_avx512<T, B, true, I>(pass, weights, r0, r1)
+             : runs_avx2<T, B, true, I>(pass, weights, r0, r1);
+    }
+  }
+}
+
+template <typename T, typename I>
+void dispatch_runs(const SegmentPass<T, I>& pass, const T* weights, int replicas, NodeIndex r0,
+                   NodeIndex r1, SincosIsa isa) {
+  switch (replicas) {
+    case 2:
+      runs_in<T, 2, I>(pass, weights, r0, r1, isa);
+      break;
+    case 4:
+      runs_in<T, 4, I>(pass, weights, r0, r1, isa);
+      break;
+    default:
+      runs_in<T, 8, I>(pass, weights, r0, r1, isa);
+      break;
+  }
+}
+
+#endif
+
+}  // namespace
+
+template <typename T>
+bool wide_rows_serve(int replicas, SincosIsa isa) {
+#if defined(HMFNET_WIDE_ROWS_X86)
+  const bool counted = replicas == 2 || replicas == 4 || replicas == 8;
+  const std::size_t record = 2 * static_cast<std::size_t>(replicas) * sizeof(T);
+  return counted && record >= 32 && isa != SincosIsa::baseline && sincos_isa_available(isa);
+#else
+  static_cast<void>(replicas);
+  static_cast<void>(isa);
+  return false;
+#endif
+}
+
+template <typename T>
+int wide_rows_partials(int replicas, SincosIsa isa) {
+#if defined(HMFNET_WIDE_ROWS_X86)
+  const std::size_t record = 2 * static_cast<std::size_t>(replicas) * sizeof(T);
+  const bool avx512 = isa == SincosIsa::avx512;
+  const std::size_t width = std::min(avx512 ? k_avx512_bytes : k_avx2_bytes, record);
+  return static_cast<int>(
+      partials_within(record / width, avx512 ? k_avx512_budget : k_avx2_budget));
+#else
+  static_cast<void>(replicas);
+  static_cast<void>(isa);
+  return 4;
+#endif
+}
+
+template <typename T>
+void wide_rows(const RowKernelArgs<T>& a, NodeIndex rows, int replicas, SincosIsa isa) {
+#if defined(HMFNET_WIDE_ROWS_X86)
+  if (a.weights == nullptr) {
+    dispatch<T, false>(a, rows, replicas, isa);
+  } else {
+    dispatch<T, true>(a, rows, replicas, isa);
+  }
+#else
+  static_cast<void>(a);
+  static_cast<void>(rows);
+  static_cast<void>(replicas);
+  static_cast<void>(isa);
+#endif
+}
+
+template <typename T, typename I>
+void wide_segment_runs(const SegmentPass<T, I>& pass, const T* weights, int replicas, NodeIndex r0,
+                       NodeIndex r1, SincosIsa isa) {
+#if defined(HMFNET_WIDE_ROWS_X86)
+  dispatch_runs(pass, weights, replicas, r0, r1, isa);
+#else
+  static_cast<void>(pass);
+  static_cast<void>(weights);
+  static_cast<void>(replicas);
+  static_cast<void>(r0);
+  static_cast<void>(r1);
+  static_cast<void>(isa);
+#endif
+}
+
+template bool wide_rows_serve<double>(int, SincosIsa);
+template int wide_rows_partials<double>(int, SincosIsa);
+template int wide_rows_partials<float>(int, SincosIsa);
+template bool wide_rows_serve<float>(int, SincosIsa);
+template void wide_rows(const RowKernelArgs<double>&, NodeIndex, int, SincosIsa);
+template void wide_rows(const RowKernelArgs<float>&, NodeIndex, int, SincosIsa);
+
+template void wide_segment_runs(const SegmentPass<double, std::uint16_t>&, const double*, int,
+                                NodeIndex, NodeIndex, SincosIsa);
+template void wide_segment_runs(const SegmentPass<double, NodeIndex>&, const double*, int,
+                                NodeIndex, NodeIndex, SincosIsa);
+template void wide_segment_runs(const SegmentPass<float, std::uint16_t>&, const float*, int,
+                                NodeIndex, NodeIndex, SincosIsa);
+template void wide_segment_runs(const SegmentPass<float, NodeIndex>&, const float*, int, NodeIndex,
+                                NodeIndex, SincosIsa);
+
+}  // namespace hmfnet

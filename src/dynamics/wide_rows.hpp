@@ -1,0 +1,45 @@
+#pragma once
+// The sparse kernel's row loops for 2, 4 or 8 replicas in AVX2 or AVX-512 registers: the
+// unblocked rows (wide_rows) and a segment's runs (wide_segment_runs). The build is
+// x86-64 baseline, where a gathered record of 2B values of T took 2B sizeof(T) / 16 SSE2 loads
+// and adds (eight of each for float64, B = 8) and the row was walked once per partial sum to keep
+// the accumulators in 16 registers. Here a record is one or two 64-byte registers (AVX-512) or
+// one to four 32-byte ones (AVX2), and the row is walked once (AVX-512) or at most twice.
+//
+// The same sums as rows_kernel in network_force.cpp, bit for bit: the replicas' values are
+// independent lanes, each lane receives the same IEEE additions (and, on a weighted network, the
+// same products w q, never contracted into a fused multiply-add: src/CMakeLists.txt) in the same
+// order: partial j over the row's entries j, j + 4, ... of its first 4 floor(d / 4), the last
+// d mod 4 into partial 0, every partial from +0.0, combined by finish_row
+// (tests/dynamics/test_wide_rows.cpp). A segment's runs are segment_runs.hpp's scalar loop with
+// each record added in these registers, to the carried partials in memory.
+#include "dynamics/row_kernel_args.hpp"
+#include "dynamics/segment_runs.hpp"
+#include "dynamics/sincos.hpp"
+
+namespace hmfnet {
+
+/// Whether wide_rows has a version for `replicas` replicas of T in `isa` (which this CPU must
+/// run): records of at least 32 bytes (float64 B = 2, 4, 8; float32 B = 4, 8) in AVX2 or
+/// AVX-512; nothing in the baseline set or off x86-64.
+template <typename T>
+bool wide_rows_serve(int replicas, SincosIsa isa);
+
+/// The partial sums one walk of a row forms in wide_rows' version (4: the row is walked once;
+/// 2: twice), where wide_rows_serve: as many as keep their accumulators within half the
+/// register file (AVX-512: 32 registers of 64 bytes, AVX2: 16 of 32).
+template <typename T>
+int wide_rows_partials(int replicas, SincosIsa isa);
+
+/// Rows [0, rows) as rows_kernel forms them, in `isa`, where wide_rows_serve: an orphaned
+/// `omp for` (every thread of a team calls it; outside one, one thread does all the rows).
+template <typename T>
+void wide_rows(const RowKernelArgs<T>& a, NodeIndex rows, int replicas, SincosIsa isa);
+
+/// Rows [r0, r1) of one segment as scalar_segment_runs adds them (`weights`: the CSR's, nullptr
+/// on a 0/1 network), in `isa`, where wide_rows_serve (the same records).
+template <typename T, typename I>
+void wide_segment_runs(const SegmentPass<T, I>& pass, const T* weights, int replicas, NodeIndex r0,
+                       NodeIndex r1, SincosIsa isa);
+
+}  // namespace hmfnet

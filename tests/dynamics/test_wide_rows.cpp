@@ -1,0 +1,195 @@
+// The wide row loop (dynamics/wide_rows.hpp) forms every row's sums as the definition that
+// network_force.cpp's rows_kernel follows, bit for bit: partial j over the row's entries j,
+// j + 4, ... of its first 4 floor(d / 4), the last d mod 4 into partial 0, each from +0.0, then
+// finish_row. Rows of degree 0 to 40 (every tail), 0/1 and weighted rows, float64 and float32,
+// 2, 4 and 8 replicas, in every instruction set this CPU runs; tables with -0.0 and subnormals.
+// A segment's runs (wide_segment_runs) leave the carried partials and cursors of the scalar loop,
+// segment after segment, in 16- and 32-bit segments, for row ranges that start anywhere.
+#include <catch2/catch.hpp>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "dynamics/column_segments.hpp"
+#include "dynamics/wide_rows.hpp"
+#include "support/random_rows.hpp"
+
+using namespace hmfnet;
+
+namespace {
+
+using Rows = test::RandomRows;
+
+template <typename T>
+std::vector<T> random_values(std::size_t n, double lo, double hi, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> value(lo, hi);
+  std::vector<T> v(n);
+  for (T& x : v) x = static_cast<T>(value(rng));
+  return v;
+}
+
+// A row kernel's outputs: g, y and the terms of every row and replica.
+struct Outputs {
+  std::vector<double> g, y, terms;
+  Outputs(std::size_t rows, int replicas)
+      : g(rows * static_cast<std::size_t>(replicas)), y(2 * g.size()), terms(2 * g.size()) {}
+  bool operator==(const Outputs& o) const {
+    const auto same = [](const std::vector<double>& a, const std::vector<double>& b) {
+      return a.size() == b.size() &&
+             std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+    };
+    return same(g, o.g) && same(y, o.y) && same(terms, o.terms);
+  }
+};
+
+template <typename T>
+RowKernelArgs<T> args(const Rows& rows, const std::vector<T>& weights, const std::vector<T>& table,
+                      const std::vector<double>& owned, Outputs& out) {
+  return {rows.row_ptr.data(), rows.cols.data(), weights.empty() ? nullptr : weights.data(),
+          table.data(),        owned.data(),     1.0 / 300.0,
+          out.g.data(),        out.y.data(),     out.terms.data()};
+}
+
+// The definition, one value of one replica at a time.
+template <typename T>
+void reference_rows(const RowKernelArgs<T>& a, NodeIndex rows, int replicas) {
+  const std::size_t record = 2 * static_cast<std::size_t>(replicas);
+  std::vector<T> partial(4 * record);
+  for (NodeIndex r = 0; r < rows; ++r) {
+    const EdgeOffset begin = a.row_ptr[r], end = a.row_ptr[r + 1];
+    const EdgeOffset full = begin + (end - begin) / 4 * 4;
+    for (std::size_t v = 0; v < record; ++v) {
+      T s[4] = {T(0), T(0), T(0), T(0)};
+      for (EdgeOffset e = begin; e < end; ++e) {
+        const std::size_t j = e < full ? static_cast<std::size_t>(e - begin) % 4 : 0;
+        const T q = a.column_cs[record * static_cast<std::size_t>(a.cols[e]) + v];
+        s[j] += a.weights != nullptr ? a.weights[e] * q : q;
+      }
+      for (std::size_t j = 0; j < 4; ++j) partial[j * record + v] = s[j];
+    }
+    finish_row(a, r, partial.data(), record, replicas);
+  }
+}
+
+// A [cos, sin] table of 2B values a column, with -0.0 and subnormals among them.
+template <typename T>
+std::vector<T> table_of(NodeIndex columns, int replicas, std::uint64_t seed) {
+  const std::size_t record = 2 * static_cast<std::size_t>(replicas);
+  std::vector<T> table = random_values<T>(record * static_cast<std::size_t>(columns), -1, 1, seed);
+  const T special[] = {T(-0.0), std::numeric_limits<T>::denorm_min(),
+                       -std::numeric_limits<T>::denorm_min()};
+  for (std::size_t k = 0; k < table.size(); k += 37) table[k] = special[(k / 37) % 3];
+  return table;
+}
+
+template <typename T>
+void compare(SincosIsa isa, const Rows& rows, int replicas, bool weighted) {
+  const auto n = static_cast<NodeIndex>(rows.row_ptr.size() - 1);
+  const std::size_t record = 2 * static_cast<std::size_t>(replicas);
+  const std::vector<T> table = table_of<T>(n, replicas, 3);
+  const std::vector<T> weights =
+      weighted ? random_values<T>(rows.cols.size(), -2, 2, 4) : std::vector<T>{};
+  const std::vector<double> owned =
+      random_values<double>(record * static_cast<std::size_t>(n), -1, 1, 5);
+  Outputs wide(static_cast<std::size_t>(n), replicas), reference = wide;
+  reference_rows(args(rows, weights, table, owned, reference), n, replicas);
+  wide_rows(args(rows, weights, table, owned, wide), n, replicas, isa);
+  INFO(sincos_isa_name(isa) << ", " << sizeof(T) * 8 << "-bit, B = " << replicas
+                            << (weighted ? ", weighted" : ", 0/1"));
+  REQUIRE(wide == reference);
+}
+
+// Every segment of `cut` (indices of type I) over rows [origin, n), the carry held from row
+// `origin` on, in `isa` (two calls, split at row `split`) and in the scalar loop.
+template <typename T, typename I>
+void compare_runs(SincosIsa isa, const Rows& rows, const ColumnSegments& cut, int replicas,
+                  bool weighted, NodeIndex origin, NodeIndex split) {
+  const auto n = static_cast<NodeIndex>(rows.row_ptr.size() - 1);
+  const std::vector<T> t = table_of<T>(n, replicas, 8);
+  const std::vector<T> weights =
+      weighted ? random_values<T>(rows.cols.size(), -2, 2, 9) : std::vector<T>{};
+  const T* w = weighted ? weights.data() : nullptr;
+  const auto held = static_cast<std::size_t>(n - origin);
+  std::vector<T> carry_wide(8 * held * static_cast<std::size_t>(replicas), T(7));
+  std::vector<T> carry_scalar = carry_wide;  // the first segment zeroes them
+  std::vector<std::uint32_t> cursor_wide(held), cursor_scalar(held);
+  for (int s = 0; s < cut.count(); ++s) {
+    const T* slice = t.data() + 2 * static_cast<std::ptrdiff_t>(replicas) * cut.first_column(s);
+    const SegmentPass<T, I> wide{
+        rows.row_ptr.data(), &cut.runs(),        s,      cut.template cols<I>(s), slice,
+        carry_wide.data(),   cursor_wide.data(), s == 0, s + 1 == cut.count(),    origin};
+    SegmentPass<T, I> scalar = wide;
+    scalar.carry = carry_scalar.data();
+    scalar.cursor = cursor_scalar.data();
+    wide_segment_runs(wide, w, replicas, origin, split, isa);
+    wide_segment_runs(wide, w, replicas, split, n, isa);
+    if (weighted) {
+      scalar_segment_runs<T, 0, true, I>(scalar, w, replicas, origin, n);
+    } else {
+      scalar_segment_runs<T, 0, false, I>(scalar, w, replicas, origin, n);
+    }
+    INFO(sincos_isa_name(isa) << ", " << sizeof(T) * 8 << "-bit, B = " << replicas
+                              << (weighted ? ", weighted" : ", 0/1") << ", segment " << s << " of "
+                              << cut.count() << ", rows from " << origin << ", split at " << split);
+    REQUIRE(std::memcmp(carry_wide.data(), carry_scalar.data(), carry_wide.size() * sizeof(T)) ==
+            0);
+    REQUIRE(cursor_wide == cursor_scalar);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("the wide segment runs add as the scalar loop does, bit for bit", "[wide_rows]") {
+  const NodeIndex n = 200;
+  const Rows rows = test::random_rows(n, n, 23);
+  const ColumnSegments narrow(rows.row_ptr, rows.cols, n, 37),
+      wide(rows.row_ptr, rows.cols, n, 64, false);
+  REQUIRE(narrow.count() == 6);
+  REQUIRE(!wide.narrow());
+  int versions = 0;
+  for (const SincosIsa isa : {SincosIsa::avx2, SincosIsa::avx512}) {
+    for (const int replicas : {2, 4, 8}) {
+      for (const bool weighted : {false, true}) {
+        for (const NodeIndex origin : {0, 41}) {
+          if (wide_rows_serve<double>(replicas, isa)) {
+            compare_runs<double, std::uint16_t>(isa, rows, narrow, replicas, weighted, origin, 99);
+            compare_runs<double, NodeIndex>(isa, rows, wide, replicas, weighted, origin, origin);
+            ++versions;
+          }
+          if (wide_rows_serve<float>(replicas, isa)) {
+            compare_runs<float, std::uint16_t>(isa, rows, narrow, replicas, weighted, origin, 150);
+            ++versions;
+          }
+        }
+      }
+    }
+  }
+  if (versions == 0) WARN("no AVX2 here: the wide segment runs do not run on this CPU");
+}
+
+TEST_CASE("the wide row loop sums as the definition, bit for bit", "[wide_rows]") {
+  const Rows rows = test::random_rows(300, 300, 17, true);
+  int versions = 0;
+  for (const SincosIsa isa : {SincosIsa::avx2, SincosIsa::avx512}) {
+    for (const int replicas : {2, 4, 8}) {
+      for (const bool weighted : {false, true}) {
+        if (wide_rows_serve<double>(replicas, isa)) {
+          compare<double>(isa, rows, replicas, weighted);
+          ++versions;
+        }
+        if (wide_rows_serve<float>(replicas, isa)) {
+          compare<float>(isa, rows, replicas, weighted);
+          ++versions;
+        }
+      }
+    }
+  }
+  if (versions == 0) WARN("no AVX2 here: the wide row loop does not run on this CPU");
+  // float32 B = 2 (16-byte records) stays with the baseline loop, and the baseline set has none.
+  CHECK_FALSE(wide_rows_serve<float>(2, SincosIsa::avx512));
+  CHECK_FALSE(wide_rows_serve<double>(8, SincosIsa::baseline));
+  CHECK_FALSE(wide_rows_serve<double>(3, SincosIsa::avx2));
+}
