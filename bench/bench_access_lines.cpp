@@ -238,17 +238,6 @@ void walk_thread(const Shape& s, int thread, int threads,
   }
 }
 
-// The partials one walk of a row forms in the unblocked kernel this CPU runs: the wide loops'
-// (dynamics/wide_rows.hpp) where they serve, else rows_kernel's (network_force.cpp
-// partials_per_pass: the live accumulators within 128 bytes).
-template <typename T>
-int partials_per_pass(int replicas) {
-  const SincosIsa isa = sincos_isa();
-  if (wide_rows_serve<T>(replicas, isa)) return wide_rows_partials<T>(replicas, isa);
-  const std::size_t record = 2 * static_cast<std::size_t>(replicas) * sizeof(T);
-  return record <= 32 ? 4 : record <= 64 ? 2 : 1;
-}
-
 // Belady's own example (IBM Systems Journal 5 (1966) 78): 1 2 3 4 1 2 5 1 2 3 4 5 takes 7
 // misses in 3 lines and 6 in 4 under optimal replacement.
 bool optimal_misses_hold() {
@@ -275,9 +264,10 @@ void AccessLines(benchmark::State& state) {
                                                   available_memory_bytes());
   const int segments =
       width >= rows ? 1 : static_cast<int>((static_cast<std::int64_t>(rows) + width - 1) / width);
-  const int partials = value == sizeof(double)
-                           ? partials_per_pass<double>(static_cast<int>(replicas))
-                           : partials_per_pass<float>(static_cast<int>(replicas));
+  // The walks of the unblocked kernel this CPU runs (dynamics/wide_rows.hpp).
+  const int b = static_cast<int>(replicas);
+  const int partials = value == sizeof(double) ? row_walk_partials<double>(b, sincos_isa())
+                                               : row_walk_partials<float>(b, sincos_isa());
   const Shape shape{&net, record, partials, width, segments};
   const std::size_t l1 = l1_cache_bytes(), l2 = l2_cache_bytes();
   // What a core holds without going to L3: its L1 and L2 together, as an L2 need not hold what

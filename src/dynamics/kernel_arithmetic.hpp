@@ -2,24 +2,25 @@
 // The per-element arithmetic of a force evaluation and a step, written once for the host and a
 // CUDA device: the [cos, sin] of an angle (sincos.hpp), the leap-frog kick and drift
 // (kick_drift_lanes.cpp, which integrator.cpp's passes run) and the sum over one CSR row of the
-// neighbours' [cos, sin] (network_force.cpp: rows_kernel, rows_kernel_single), with g_n and the
-// observable terms of coupling_force.hpp. The CPU kernels and a device backend compute the same
-// IEEE operations in the same order, so a device reproduces the CPU's bits; tests/dynamics/
-// test_kernel_arithmetic.cpp checks these functions against the CPU kernels bit for bit, and the
-// gpu test label (tests/gpu) checks the device against these functions.
+// neighbours' [cos, sin] (network_force.cpp: rows_kernel, rows_kernel_single; wide_rows.cpp),
+// with g_n and the observable terms of coupling_force.hpp. The CPU kernels and a device backend
+// compute the same IEEE operations in the same order, so a device reproduces the CPU's bits;
+// tests/dynamics/test_kernel_arithmetic.cpp checks these functions against the CPU kernels bit
+// for bit, and the gpu test label (tests/gpu) checks the device against these functions.
 //
 // No fused multiply-add may be formed anywhere here. The CPU code is compiled for the x86-64
-// baseline, which has none, and sincos.cpp also with -ffp-contract=off (a build adding an -march
-// with FMA would let GCC contract integrator.cpp and network_force.cpp, and the CPU would then
-// leave these bits). nvcc contracts a * b + c into an FMA by default: every CUDA file that
-// includes this header is compiled with --fmad=false (HMFNET_CUDA_OPTIONS, cmake/HmfnetCuda.cmake,
-// on the hmfnet_cuda target). nvcc then emits mul.rn and add.rn, whose explicit rounding forbids
-// ptxas and the driver's PTX JIT to fuse them (PTX ISA, "add", "mul"); checked on the PTX of
-// dynamics/cuda/device_arithmetic_check.cu: no fma.rn.f64 from these functions, 17 from CUDA's
-// own sincos (the path beyond k_reduced_range), against 33 with nvcc's default. The flag and not
-// __dmul_rn / __dadd_rn, because the sincos below is one template shared with sincos.cpp's
-// vector lanes, whose operators are the arithmetic. nvcc has no macro that reveals --fmad, so the
-// gpu test is what catches a CUDA file compiled without it.
+// baseline, which has none, and sincos.cpp and the sparse row loops (network_force.cpp,
+// segment_runs.cpp, wide_rows.cpp, whose AVX-512 and AVX2 versions have FMA) also with
+// -ffp-contract=off (a build adding an -march with FMA would let GCC contract integrator.cpp,
+// and the CPU would then leave these bits). nvcc contracts a * b + c into an FMA by default: every
+// CUDA file that includes this header is compiled with --fmad=false (HMFNET_CUDA_OPTIONS,
+// cmake/HmfnetCuda.cmake, on the hmfnet_cuda target). nvcc then emits mul.rn and add.rn, whose
+// explicit rounding forbids ptxas and the driver's PTX JIT to fuse them (PTX ISA, "add", "mul");
+// checked on the PTX of dynamics/cuda/device_arithmetic_check.cu: no fma.rn.f64 from these
+// functions, 17 from CUDA's own sincos (the path beyond k_reduced_range), against 33 with nvcc's
+// default. The flag and not __dmul_rn / __dadd_rn, because the sincos below is one template
+// shared with sincos.cpp's vector lanes, whose operators are the arithmetic. nvcc has no macro that
+// reveals --fmad, so the gpu test is what catches a CUDA file compiled without it.
 #include <cmath>  // ::sincos: glibc's (a GNU extension) on the host, CUDA's on the device
 #include <cstddef>
 #include <cstdint>
@@ -185,12 +186,12 @@ struct LocalField {
   double im;
 };
 
-/// y_n of replica `lane` for the CSR row [begin, end) summed exactly as network_force.cpp's
-/// kernels sum it, whatever their replica count: four partial sums in T, partial j over the
-/// entries begin + j, begin + j + 4, ... of the first 4 floor(d / 4), the last d mod 4 added to
-/// partial 0, each entry adding w [cos, sin] (w = 1 without weights), combined as
-/// (s0 + s1) + (s2 + s3) and then widened to double. column_cs holds the column space x replicas
-/// x [cos, sin] in T, weights the row's entries in T (nullptr: a 0/1 network). T is double
+/// y_n of replica `lane` for the CSR row [begin, end) summed exactly as the sparse force's row
+/// loops (network_force.cpp, wide_rows.cpp) sum it, whatever their replica count: four partial sums
+/// in T, partial j over the entries begin + j, begin + j + 4, ... of the first 4 floor(d / 4), the
+/// last d mod 4 added to partial 0, each entry adding w [cos, sin] (w = 1 without weights),
+/// combined as (s0 + s1) + (s2 + s3) and then widened to double. column_cs holds the column space x
+/// replicas x [cos, sin] in T, weights the row's entries in T (nullptr: a 0/1 network). T is double
 /// (float64) or float (ForcePrecision::float32).
 template <typename T, typename Offset, typename Index>
 HMFNET_HD inline LocalField row_field(Offset begin, Offset end, const Index* cols, const T* weights,

@@ -19,6 +19,9 @@ namespace hmfnet {
 
 namespace {
 
+// The baseline row loop: x86-64 baseline instructions (SSE2), for every replica count where the
+// wide loops of wide_rows.hpp do not serve (HMFNET_SINCOS_ISA=baseline, a CPU without AVX2,
+// float32 B = 2, counts other than 2, 4, 8); the same bits as they.
 // Replica count B fixed at compile time so the inner loops unroll and vectorise; `runtime_b`
 // serves other counts. Weighted is a template flag so the 0/1 loop reads no values.
 // Each replica is summed exactly as rows_kernel_single sums one, so B replicas in one pass equal
@@ -68,12 +71,11 @@ void rows_kernel(const RowKernelArgs<T>& a, NodeIndex rows, int runtime_b) {
   }
 }
 
-// The partials formed per pass of rows_kernel: as many as keep C x 2B values of T within
-// 128 bytes (8 SSE registers, leaving the rest for loads and addresses).
+// The partials formed per pass of rows_kernel (row_kernel_args.hpp: baseline_walk_partials).
 template <typename T, int B>
 constexpr std::size_t partials_per_pass() {
-  constexpr int bytes = 2 * B * static_cast<int>(sizeof(T));
-  return bytes <= 32 ? 4 : bytes <= 64 ? 2 : 1;
+  return static_cast<std::size_t>(
+      baseline_walk_partials(2 * static_cast<std::size_t>(B) * sizeof(T)));
 }
 
 // One replica: four independent [cos, sin] accumulators per row break the floating-point add
@@ -162,9 +164,13 @@ void segmented_rows_kernel(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, 
                                    seg == 0,
                                    seg + 1 == count,
                                    static_cast<NodeIndex>(p0)};
-      if (wide) {
-        wide_segment_runs(pass, a.weights, nb, r0, r1, isa);
-      } else if constexpr (!Weighted && (B == 1 || B == 2)) {
+      if constexpr (B == 2 || B == 4 || B == 8) {
+        if (wide) {
+          wide_segment_runs(pass, a.weights, nb, r0, r1, isa);
+          continue;
+        }
+      }
+      if constexpr (!Weighted && (B == 1 || B == 2)) {
         add_segment_runs(pass, nb, r0, r1, true);
       } else {
         scalar_segment_runs<T, B, Weighted, I>(pass, a.weights, nb, r0, r1);

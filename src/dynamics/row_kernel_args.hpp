@@ -26,6 +26,13 @@ struct RowKernelArgs {
   double* terms;  // rows x replicas x [|y_n|, Re(e^{-i theta_n} y_n)]
 };
 
+/// The partials one walk of a row forms in network_force.cpp's baseline rows_kernel, for
+/// records of `record_bytes`: as many as keep their accumulators within 128 bytes (8 SSE
+/// registers, leaving the rest for loads and addresses).
+constexpr int baseline_walk_partials(std::size_t record_bytes) {
+  return record_bytes <= 32 ? 4 : record_bytes <= 64 ? 2 : 1;
+}
+
 /// Row r's outputs from its four partial sums of every replica (partial j of value v at
 /// p[j * stride + v]), combined as (s0 + s1) + (s2 + s3) in T: every row loop ends here, so
 /// they agree bit for bit whenever their partials do.

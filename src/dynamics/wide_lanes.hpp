@@ -16,6 +16,7 @@ using Lanes [[gnu::vector_size(V)]] = T;
 /// The lanes at p (any alignment).
 template <typename T, std::size_t V>
 HMFNET_LANES_INLINE void load_lanes(Lanes<T, V>& v, const T* p) {
+  static_assert(sizeof(Lanes<T, V>) == V, "the compiler made V bytes of T one vector");
   std::memcpy(&v, p, V);
 }
 

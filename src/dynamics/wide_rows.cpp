@@ -101,6 +101,7 @@ void rows_in(const RowKernelArgs<T>& a, NodeIndex rows, SincosIsa isa) {
   }
 }
 
+// The counts wide_rows_serve allows; nothing for another (a precondition of the callers).
 template <typename T, bool Weighted>
 void dispatch(const RowKernelArgs<T>& a, NodeIndex rows, int replicas, SincosIsa isa) {
   switch (replicas) {
@@ -110,8 +111,10 @@ void dispatch(const RowKernelArgs<T>& a, NodeIndex rows, int replicas, SincosIsa
     case 4:
       rows_in<T, 4, Weighted>(a, rows, isa);
       break;
-    default:
+    case 8:
       rows_in<T, 8, Weighted>(a, rows, isa);
+      break;
+    default:
       break;
   }
 }
@@ -164,8 +167,10 @@ void dispatch_runs(const SegmentPass<T, I>& pass, const T* weights, int replicas
     case 4:
       runs_in<T, 4, I>(pass, weights, r0, r1, isa);
       break;
-    default:
+    case 8:
       runs_in<T, 8, I>(pass, weights, r0, r1, isa);
+      break;
+    default:
       break;
   }
 }
@@ -188,18 +193,20 @@ bool wide_rows_serve(int replicas, SincosIsa isa) {
 }
 
 template <typename T>
-int wide_rows_partials(int replicas, SincosIsa isa) {
-#if defined(HMFNET_WIDE_ROWS_X86)
+int row_walk_partials(int replicas, SincosIsa isa) {
   const std::size_t record = 2 * static_cast<std::size_t>(replicas) * sizeof(T);
-  const bool avx512 = isa == SincosIsa::avx512;
-  const std::size_t width = std::min(avx512 ? k_avx512_bytes : k_avx2_bytes, record);
-  return static_cast<int>(
-      partials_within(record / width, avx512 ? k_avx512_budget : k_avx2_budget));
+#if defined(HMFNET_WIDE_ROWS_X86)
+  if (wide_rows_serve<T>(replicas, isa)) {
+    const bool avx512 = isa == SincosIsa::avx512;
+    const std::size_t width = std::min(avx512 ? k_avx512_bytes : k_avx2_bytes, record);
+    return static_cast<int>(
+        partials_within(record / width, avx512 ? k_avx512_budget : k_avx2_budget));
+  }
 #else
-  static_cast<void>(replicas);
   static_cast<void>(isa);
-  return 4;
 #endif
+  const bool compiled = replicas == 1 || replicas == 2 || replicas == 4 || replicas == 8;
+  return compiled ? baseline_walk_partials(record) : 4;  // run-time counts: one walk
 }
 
 template <typename T>
@@ -234,8 +241,8 @@ void wide_segment_runs(const SegmentPass<T, I>& pass, const T* weights, int repl
 }
 
 template bool wide_rows_serve<double>(int, SincosIsa);
-template int wide_rows_partials<double>(int, SincosIsa);
-template int wide_rows_partials<float>(int, SincosIsa);
+template int row_walk_partials<double>(int, SincosIsa);
+template int row_walk_partials<float>(int, SincosIsa);
 template bool wide_rows_serve<float>(int, SincosIsa);
 template void wide_rows(const RowKernelArgs<double>&, NodeIndex, int, SincosIsa);
 template void wide_rows(const RowKernelArgs<float>&, NodeIndex, int, SincosIsa);

@@ -1,10 +1,11 @@
 #pragma once
 // The sparse kernel's row loops for 2, 4 or 8 replicas in AVX2 or AVX-512 registers: the
-// unblocked rows (wide_rows) and a segment's runs (wide_segment_runs). The build is
-// x86-64 baseline, where a gathered record of 2B values of T took 2B sizeof(T) / 16 SSE2 loads
-// and adds (eight of each for float64, B = 8) and the row was walked once per partial sum to keep
-// the accumulators in 16 registers. Here a record is one or two 64-byte registers (AVX-512) or
-// one to four 32-byte ones (AVX2), and the row is walked once (AVX-512) or at most twice.
+// unblocked rows (wide_rows) and a segment's runs (wide_segment_runs). The build is x86-64
+// baseline, where a gathered record of 2B values of T takes 2B sizeof(T) / 16 SSE2 loads and
+// adds (eight of each for float64, B = 8) and the row is walked up to four times (float64 B = 8;
+// twice for float64 B = 4 and float32 B = 8) to keep the accumulators in 16 registers. Here a
+// record is one or two 64-byte registers (AVX-512) or one to four 32-byte ones (AVX2), and the
+// row is walked once (AVX-512) or at most twice (AVX2, float64 B = 8).
 //
 // The same sums as rows_kernel in network_force.cpp, bit for bit: the replicas' values are
 // independent lanes, each lane receives the same IEEE additions (and, on a weighted network, the
@@ -25,11 +26,13 @@ namespace hmfnet {
 template <typename T>
 bool wide_rows_serve(int replicas, SincosIsa isa);
 
-/// The partial sums one walk of a row forms in wide_rows' version (4: the row is walked once;
-/// 2: twice), where wide_rows_serve: as many as keep their accumulators within half the
-/// register file (AVX-512: 32 registers of 64 bytes, AVX2: 16 of 32).
+/// The partial sums one walk of a row forms in the unblocked kernel that runs `replicas`
+/// replicas of T in `isa` (4: the row is walked once; 2: twice; 1: four times): wide_rows'
+/// version where wide_rows_serve, as many as keep their accumulators within half the register
+/// file (AVX-512: 32 registers of 64 bytes, AVX2: 16 of 32); else network_force.cpp's baseline
+/// loops (row_kernel_args.hpp: baseline_walk_partials; one walk at a run-time count).
 template <typename T>
-int wide_rows_partials(int replicas, SincosIsa isa);
+int row_walk_partials(int replicas, SincosIsa isa);
 
 /// Rows [0, rows) as rows_kernel forms them, in `isa`, where wide_rows_serve: an orphaned
 /// `omp for` (every thread of a team calls it; outside one, one thread does all the rows).

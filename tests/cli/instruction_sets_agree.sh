@@ -5,7 +5,8 @@
 # whole, one partial), on a rank-one network with unequal a_n (--force rank-one: an error, not
 # the sparse force, should its structure go undetected), and on an ER network (9 replicas: the
 # baseline row loop; 8 in float64 and 4 in float32: the wide row loops of dynamics/wide_rows.hpp
-# in AVX-512 and AVX2, and the baseline loop under HMFNET_SINCOS_ISA=baseline), gives the same
+# in AVX-512 and AVX2, and the baseline loop under HMFNET_SINCOS_ISA=baseline; the rank-one
+# network's weights through the sparse force at 8 float32 and 2 float64 replicas), gives the same
 # --json points and results file under the widest set this CPU runs and under
 # HMFNET_SINCOS_ISA=baseline and avx2. On a CPU without AVX-512 the widest is one of the others,
 # and the comparison still holds.
@@ -30,7 +31,7 @@ with open(sys.argv[1], "w") as f:
             f.write(f"{i + 1} {j + 1} {a[i] * a[j]!r}\n")
 PY
 for case in "k.h5 16 auto" "k.h5 13 auto" "er.h5 9 auto" "er.h5 8 auto" "er.h5 4 auto float32" \
-  "rank_one.mtx 16 rank-one"; do
+  "rank_one.mtx 16 rank-one" "rank_one.mtx 8 sparse float32" "rank_one.mtx 2 sparse"; do
   read -r net replicas force precision <<< "$case"
   for isa in widest baseline avx2; do
     env_isa=()

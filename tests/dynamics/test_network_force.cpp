@@ -102,9 +102,11 @@ TEST_CASE("float32 force is bit-identical for 1 and 2 threads and per replica", 
 
 TEST_CASE("Every replica kernel equals one-replica passes bit for bit [B = 2, 3, 4, 8]",
           "[network_force]") {
-  // Each B takes another kernel shape (partials per pass: B = 2 four, B = 4 two in float64 and
-  // four in float32, B = 8 one and two, B = 3 the run-time width), on 0/1 and weighted rows whose
-  // degrees are not all multiples of 4 (the tail goes to partial 0).
+  // Each B takes another kernel shape (the baseline loops' partials per pass: B = 2 four, B = 4
+  // two in float64 and four in float32, B = 8 one and two, B = 3 the run-time width; with AVX2 the
+  // wide loops of wide_rows.hpp for B = 2, 4, 8, the baseline ones in the test
+  // unit.baseline_row_loops), on 0/1 and weighted rows whose degrees are not all multiples of 4
+  // (the tail goes to partial 0).
   const Network plain = erdos_renyi({500, 0.05, 9});
   const Network heavy = test::pair_weighted(plain);
   for (const Network* net : {&plain, &heavy}) {

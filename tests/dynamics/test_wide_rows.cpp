@@ -1,10 +1,11 @@
-// The wide row loop (dynamics/wide_rows.hpp) forms every row's sums as the definition that
-// network_force.cpp's rows_kernel follows, bit for bit: partial j over the row's entries j,
-// j + 4, ... of its first 4 floor(d / 4), the last d mod 4 into partial 0, each from +0.0, then
-// finish_row. Rows of degree 0 to 40 (every tail), 0/1 and weighted rows, float64 and float32,
-// 2, 4 and 8 replicas, in every instruction set this CPU runs; tables with -0.0 and subnormals.
-// A segment's runs (wide_segment_runs) leave the carried partials and cursors of the scalar loop,
-// segment after segment, in 16- and 32-bit segments, for row ranges that start anywhere.
+// The wide row loop (dynamics/wide_rows.hpp) forms every row's sums and outputs as the definition
+// (kernel_arithmetic.hpp: row_field, coupling_force, order_term, coupling_term), bit for bit:
+// partial j over the row's entries j, j + 4, ... of its first 4 floor(d / 4), the last d mod 4
+// into partial 0, each from +0.0. Rows of degree 0 to 40 (every tail), 0/1 and weighted rows,
+// float64 and float32, 2, 4 and 8 replicas, in every instruction set this CPU runs; tables with
+// -0.0 and subnormals. A segment's runs (wide_segment_runs) leave the carried partials and cursors
+// of the scalar loop, segment after segment, in 16- and 32-bit segments, for row ranges that start
+// anywhere.
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <cstring>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "dynamics/column_segments.hpp"
+#include "dynamics/kernel_arithmetic.hpp"
 #include "dynamics/wide_rows.hpp"
 #include "support/random_rows.hpp"
 
@@ -53,24 +55,22 @@ RowKernelArgs<T> args(const Rows& rows, const std::vector<T>& weights, const std
           out.g.data(),        out.y.data(),     out.terms.data()};
 }
 
-// The definition, one value of one replica at a time.
+// The definition, one replica at a time: kernel_arithmetic.hpp's row sum and row outputs.
 template <typename T>
 void reference_rows(const RowKernelArgs<T>& a, NodeIndex rows, int replicas) {
-  const std::size_t record = 2 * static_cast<std::size_t>(replicas);
-  std::vector<T> partial(4 * record);
   for (NodeIndex r = 0; r < rows; ++r) {
-    const EdgeOffset begin = a.row_ptr[r], end = a.row_ptr[r + 1];
-    const EdgeOffset full = begin + (end - begin) / 4 * 4;
-    for (std::size_t v = 0; v < record; ++v) {
-      T s[4] = {T(0), T(0), T(0), T(0)};
-      for (EdgeOffset e = begin; e < end; ++e) {
-        const std::size_t j = e < full ? static_cast<std::size_t>(e - begin) % 4 : 0;
-        const T q = a.column_cs[record * static_cast<std::size_t>(a.cols[e]) + v];
-        s[j] += a.weights != nullptr ? a.weights[e] * q : q;
-      }
-      for (std::size_t j = 0; j < 4; ++j) partial[j * record + v] = s[j];
+    for (int b = 0; b < replicas; ++b) {
+      const LocalField y =
+          row_field(a.row_ptr[r], a.row_ptr[r + 1], a.cols, a.weights, a.column_cs, replicas, b);
+      const auto cell = static_cast<std::size_t>(r) * static_cast<std::size_t>(replicas) +
+                        static_cast<std::size_t>(b);
+      const double c = a.owned_cs[2 * cell], s = a.owned_cs[2 * cell + 1];
+      a.g[cell] = coupling_force(a.inverse_n, c, s, y);
+      a.y[2 * cell] = y.re;
+      a.y[2 * cell + 1] = y.im;
+      a.terms[2 * cell] = order_term(y);
+      a.terms[2 * cell + 1] = coupling_term(c, s, y);
     }
-    finish_row(a, r, partial.data(), record, replicas);
   }
 }
 
@@ -157,10 +157,12 @@ TEST_CASE("the wide segment runs add as the scalar loop does, bit for bit", "[wi
           if (wide_rows_serve<double>(replicas, isa)) {
             compare_runs<double, std::uint16_t>(isa, rows, narrow, replicas, weighted, origin, 99);
             compare_runs<double, NodeIndex>(isa, rows, wide, replicas, weighted, origin, origin);
+            compare_runs<double, NodeIndex>(isa, rows, wide, replicas, weighted, origin, 120);
             ++versions;
           }
           if (wide_rows_serve<float>(replicas, isa)) {
             compare_runs<float, std::uint16_t>(isa, rows, narrow, replicas, weighted, origin, 150);
+            compare_runs<float, NodeIndex>(isa, rows, wide, replicas, weighted, origin, 77);
             ++versions;
           }
         }
@@ -188,6 +190,12 @@ TEST_CASE("the wide row loop sums as the definition, bit for bit", "[wide_rows]"
     }
   }
   if (versions == 0) WARN("no AVX2 here: the wide row loop does not run on this CPU");
+  // Served wherever the CPU runs the set: a CPU with AVX2 must run the versions above.
+  for (const SincosIsa isa : {SincosIsa::avx2, SincosIsa::avx512}) {
+    CHECK(wide_rows_serve<double>(8, isa) == sincos_isa_available(isa));
+    CHECK(wide_rows_serve<double>(2, isa) == sincos_isa_available(isa));
+    CHECK(wide_rows_serve<float>(4, isa) == sincos_isa_available(isa));
+  }
   // float32 B = 2 (16-byte records) stays with the baseline loop, and the baseline set has none.
   CHECK_FALSE(wide_rows_serve<float>(2, SincosIsa::avx512));
   CHECK_FALSE(wide_rows_serve<double>(8, SincosIsa::baseline));

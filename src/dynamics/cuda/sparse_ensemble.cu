@@ -35,7 +35,7 @@ struct ForceArgs {
 };
 
 // What both force kernels do with a cell's row sum y: g, and the terms and y where asked
-// (network_force.cpp's finish_row, kernel_arithmetic.hpp).
+// (row_kernel_args.hpp's finish_row, kernel_arithmetic.hpp).
 template <typename T>
 __device__ void finish_cell(const ForceArgs<T>& a, std::int64_t k, const LocalField& y) {
   const double c = a.cs[2 * k], s = a.cs[2 * k + 1];
