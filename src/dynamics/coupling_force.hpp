@@ -36,6 +36,9 @@ class CouplingForce {
   /// Stored entries gathered per evaluation, for the default thread count (thread_choice.hpp):
   /// those read, unless the force reads none (the rank-one force).
   virtual EdgeOffset gathers_per_evaluation() const { return work_per_evaluation(); }
+  /// What one lane's gather costs against one replica's, with `lanes` replica lanes in a pass,
+  /// for the default thread count (thread_choice.hpp: wide_lane_gather_cost).
+  virtual double lane_gather_cost(int /*lanes*/) const { return 1.0; }
   /// The work of one row and replica besides its gathers, in the thread rule's units
   /// (thread_choice.hpp: k_row_work for a sparse row, k_rank_one_row_work for the rank-one force).
   virtual std::int64_t row_work() const { return k_row_work; }

@@ -13,6 +13,7 @@
 #include "dynamics/segment_runs.hpp"
 #include "dynamics/sincos.hpp"
 #include "dynamics/team.hpp"
+#include "dynamics/thread_choice.hpp"
 #include "dynamics/wide_rows.hpp"
 
 namespace hmfnet {
@@ -310,6 +311,13 @@ void NetworkForce::run_rows(const T* weights, const T* column_cs, NodeIndex rows
     carry = m_carry.data();
   }
   run_segmented_kernel(args, SegmentArgs<T>{&m_segments, carry, m_cursor.data()}, rows, replicas);
+}
+
+double NetworkForce::lane_gather_cost(int lanes) const {
+  const bool float32 = m_precision == ForcePrecision::float32;
+  const bool wide = float32 ? wide_rows_serve<float>(lanes, sincos_isa())
+                            : wide_rows_serve<double>(lanes, sincos_isa());
+  return wide ? wide_lane_gather_cost(float32, lanes) : 1.0;
 }
 
 void NetworkForce::take_columns(DistributedNetwork& network) {

@@ -45,6 +45,7 @@ class NetworkForce : public CouplingForce {
   void prepare(const RotorState& state, std::vector<double>& g, ForceSums& sums) override;
   void evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) override;
   EdgeOffset work_per_evaluation() const override { return m_nnz; }
+  double lane_gather_cost(int lanes) const override;
   const char* name() const override {
     return m_precision == ForcePrecision::float64 ? "sparse" : "sparse-float32";
   }

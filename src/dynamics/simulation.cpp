@@ -499,9 +499,11 @@ SimulationResult simulate(const DistributedNetwork& network, const std::vector<d
     throw ParameterError("rotor node", std::to_string(params.rotor_node),
                          "0 <= node < N = " + std::to_string(network.global_size()));
   }
-  const std::int64_t work = step_work(static_cast<std::int64_t>(force.gathers_per_evaluation()),
-                                      static_cast<std::int64_t>(network.local_size()),
-                                      static_cast<std::int64_t>(lanes(params)), force.row_work());
+  const auto pass_lanes = static_cast<int>(lanes(params));
+  const auto gathers = static_cast<std::int64_t>(std::llround(
+      static_cast<double>(force.gathers_per_evaluation()) * force.lane_gather_cost(pass_lanes)));
+  const std::int64_t work = step_work(gathers, static_cast<std::int64_t>(network.local_size()),
+                                      static_cast<std::int64_t>(pass_lanes), force.row_work());
   const ThreadCountScope threads(params.threads > 0 ? params.threads
                                                     : default_threads(work, omp_get_max_threads()));
   SimulationResult result;

@@ -18,6 +18,19 @@ WaitPolicy wait_policy_from_environment() {
   return policy == "PASSIVE" ? WaitPolicy::passive : WaitPolicy::spinning;
 }
 
+double wide_lane_gather_cost(bool float32, int lanes) {
+  switch (lanes) {
+    case 2:
+      return float32 ? 1.0 : 0.64;  // float32 B = 2: the baseline loop
+    case 4:
+      return float32 ? 0.40 : 0.44;
+    case 8:
+      return float32 ? 0.32 : 0.44;
+    default:
+      return 1.0;
+  }
+}
+
 std::int64_t step_work(std::int64_t gathers, std::int64_t rows, std::int64_t lanes,
                        std::int64_t row_work) {
   return (gathers + row_work * rows) * lanes;

@@ -52,6 +52,16 @@ inline constexpr std::int64_t k_row_work = 20;
 /// RankOneForce::row_work gives it.
 inline constexpr std::int64_t k_rank_one_row_work = 15;
 
+/// What one lane's gather costs against one replica's where the sparse force's wide row loops run
+/// (wide_rows.hpp): an entry's index is read once for all lanes and its record added in one or
+/// two registers. The inverse of the aggregate rate over float64 B = 1 (ER N = 10^4, d = 100,
+/// 1 thread, Intel Xeon; docs/performance.md "Replica rows in wide registers"): float64 B = 2
+/// 0.64, B = 4 0.44, B = 8 0.44; float32 B = 4 0.40, B = 8 0.32. Counted at 1 per lane, B = 8
+/// rows took a second thread under PASSIVE at ER N = 1500, d = 100, where it ran 0.72x one.
+/// 1 where those loops do not serve (the baseline loops: a lane's gather was counted whole when
+/// the rule was measured).
+double wide_lane_gather_cost(bool float32, int lanes);
+
 /// The rule's work of one step on this rank: (gathers + row_work x rows) x replica lanes.
 std::int64_t step_work(std::int64_t gathers, std::int64_t rows, std::int64_t lanes,
                        std::int64_t row_work = k_row_work);

@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "dynamics/rank_one_force.hpp"
 #include "dynamics/simulation.hpp"
 #include "dynamics/thread_choice.hpp"
+#include "dynamics/wide_rows.hpp"
 #include "network/complete_graph.hpp"
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
@@ -46,6 +48,18 @@ TEST_CASE("The default thread count follows the work per step and the wait polic
   CHECK(default_threads(step_work(999'058, 10'000, 1), 2, passive) == 2);
   // ER N = 10^5, d = 20: two under either policy (1.6-1.7x when passive).
   CHECK(default_threads(step_work(2'000'000, 100'000, 1), 2, passive) == 2);
+  // Eight float64 replicas in the wide row loops (a lane's gather at wide_lane_gather_cost,
+  // 0.44): ER N = 1500, d = 100 under PASSIVE, one (two ran 0.72x: counted whole, the rule gave
+  // two); N = 2500 and 4000, d = 100, two (1.02-1.16x and 1.17-1.25x).
+  const auto eight = [](std::int64_t n, std::int64_t entries) {
+    const auto gathers = static_cast<std::int64_t>(
+        std::llround(static_cast<double>(entries) * wide_lane_gather_cost(false, 8)));
+    return step_work(gathers, n, 8);
+  };
+  CHECK(default_threads(step_work(150'000, 1'500, 8), 2, passive) == 2);
+  CHECK(default_threads(eight(1'500, 150'000), 2, passive) == 1);
+  CHECK(default_threads(eight(2'500, 250'000), 2, passive) == 2);
+  CHECK(default_threads(eight(4'000, 400'000), 2, passive) == 2);
   // The complete graph (no gathers; rows at k_rank_one_row_work): N = 200 and 400 with 16
   // replicas, one (0.9x; 0.78-0.85x at N = 400, which k_row_work gave two); N = 1600 with 16 and
   // N = 2 10^4 with one, two when spinning (1.4x and 1.9x on the AMD EPYC, 1.23x and 1.68x on
@@ -112,6 +126,24 @@ TEST_CASE("A run reports the threads it used: the rule's, or the count it was gi
   CHECK(simulate(d, net.degrees(), force, p).threads == 2);
   p.threads = -1;
   CHECK_THROWS_AS(validate(p), ParameterError);
+}
+
+TEST_CASE("The sparse force gives the rule its lanes' gathers at the wide loops' cost",
+          "[threads]") {
+  const Network net = erdos_renyi({200, 0.05, 6});
+  const DistributedNetwork d(net);
+  NetworkForce force(d);
+  const bool wide = wide_rows_serve<double>(8, sincos_isa());
+  CHECK(force.lane_gather_cost(8) == (wide ? wide_lane_gather_cost(false, 8) : 1.0));
+  CHECK(force.lane_gather_cost(1) == 1.0);
+  CHECK(force.lane_gather_cost(3) == 1.0);  // the baseline loop's run-time width
+  SimulationParameters p = test::short_run();
+  p.replicas.assign(8, p.replicas.front());
+  const SimulationResult r = simulate(d, net.degrees(), force, p);
+  const auto gathers = static_cast<std::int64_t>(
+      std::llround(static_cast<double>(force.work_per_evaluation()) * force.lane_gather_cost(8)));
+  CHECK(r.thread_rule_work == step_work(gathers, static_cast<std::int64_t>(d.local_size()), 8));
+  if (wide) CHECK(r.thread_rule_work < step_work(force.work_per_evaluation(), d.local_size(), 8));
 }
 
 TEST_CASE("The rank-one force gives the rule its rows only, at their own weight, once per replica",
