@@ -56,7 +56,9 @@ inline constexpr std::int64_t k_rank_one_row_work = 15;
 /// (wide_rows.hpp): an entry's index is read once for all lanes and its record added in one or
 /// two registers. The inverse of the aggregate rate over float64 B = 1 (ER N = 10^4, d = 100,
 /// 1 thread, Intel Xeon; docs/performance.md "Replica rows in wide registers"): float64 B = 2
-/// 0.64, B = 4 0.44, B = 8 0.44; float32 B = 4 0.40, B = 8 0.32. Counted at 1 per lane, B = 8
+/// 0.64, B = 4 0.44, B = 8 0.44; float32 B = 4 0.40, B = 8 0.32: whole steps' ratios given to
+/// the gathers alone, measured in AVX-512 (AVX2 gains less), an approximation that moves the
+/// crossover at d = 100 by ~20%, where either count runs within 1.2x. Counted at 1 per lane, B = 8
 /// rows took a second thread under PASSIVE at ER N = 1500, d = 100, where it ran 0.72x one.
 /// 1 where those loops do not serve (the baseline loops: a lane's gather was counted whole when
 /// the rule was measured).

@@ -68,7 +68,7 @@ HMFNET_LANES_INLINE D cos_lanes(const D& a, const D& b) {
 
 // finish_row's outputs (float64) of the replicas whose values sit in [c, c + W) of the four
 // partials at p (partial j at p[j 2B]; W doubles a register), lane by lane (float64 B = 4 and
-// 8: 1.07-1.13x the scalar finish, N = 10^4, 1 and 2 threads): the same IEEE operations on the same
+// 8: 1.04-1.14x the scalar finish, N = 10^4, 1 and 2 threads): the same IEEE operations on the same
 // operands in the same order. With y = (yc, ys) and the row's own o = (c, s) in adjacent lanes, and
 // x~ the pairs of x swapped: y * y + (y * y)~ is yc yc + ys ys in the cos lane, o * y + (o * y)~ is
 // c yc + s ys there, and o * y~ - (o * y~)~ is c ys - s yc; the terms take the cos lanes of the

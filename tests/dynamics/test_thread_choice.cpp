@@ -137,6 +137,10 @@ TEST_CASE("The sparse force gives the rule its lanes' gathers at the wide loops'
   CHECK(force.lane_gather_cost(8) == (wide ? wide_lane_gather_cost(false, 8) : 1.0));
   CHECK(force.lane_gather_cost(1) == 1.0);
   CHECK(force.lane_gather_cost(3) == 1.0);  // the baseline loop's run-time width
+  const NetworkForce narrow(d, ForcePrecision::float32);
+  CHECK(narrow.lane_gather_cost(2) == 1.0);  // 16-byte records: the baseline loop
+  CHECK(narrow.lane_gather_cost(8) ==
+        (wide_rows_serve<float>(8, sincos_isa()) ? wide_lane_gather_cost(true, 8) : 1.0));
   SimulationParameters p = test::short_run();
   p.replicas.assign(8, p.replicas.front());
   const SimulationResult r = simulate(d, net.degrees(), force, p);
