@@ -19,6 +19,13 @@ struct ForceSums {
   std::vector<double> coupling;  ///< per replica: sum_n Re(e^{-i theta_n} y_n)
 };
 
+/// What an evaluation forms besides g. The sums are read only where a record is taken (at the
+/// end of a segment of steps, or after each step of a sampled one), so the other evaluations (a
+/// splitting's inner ones, the steps between records) skip them: the rank-one force then skips
+/// |y_n| (a square root a cell) and both ordered sums, the sparse force the ordered pass over its
+/// terms. g is the same either way, bit for bit (tests/dynamics/test_force_outputs.cpp).
+enum class ForceOutputs { force_and_sums, force_only };
+
 class CouplingForce {
  public:
   virtual ~CouplingForce() = default;
@@ -26,11 +33,14 @@ class CouplingForce {
   /// (team.hpp); throws ParameterError for a state it cannot take. evaluate() calls it itself
   /// when it runs outside a team.
   virtual void prepare(const RotorState& state, std::vector<double>& g, ForceSums& sums) = 0;
-  /// g (rows x replicas, row-major) at the phases of `state`, and the local sums. Called by every
-  /// thread of a step's team (after prepare) or outside one; collective when the network is
-  /// distributed. The sums are complete on the master thread on return, on the others after the
-  /// next barrier.
-  virtual void evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) = 0;
+  /// g (rows x replicas, row-major) at the phases of `state`, and the local sums unless
+  /// `outputs` is force_only (then `sums` keeps its values). Called by every thread of a step's
+  /// team (after prepare) or outside one; collective when the network is distributed. The sums
+  /// are complete on the master thread on return, on the others after the next barrier.
+  void evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums,
+                ForceOutputs outputs = ForceOutputs::force_and_sums) {
+    compute(state, g, sums, outputs);
+  }
   /// Stored entries of A this rank reads per evaluation (for throughput figures).
   virtual EdgeOffset work_per_evaluation() const = 0;
   /// Stored entries gathered per evaluation, for the default thread count (thread_choice.hpp):
@@ -47,6 +57,11 @@ class CouplingForce {
   /// y_n = sum_m A_nm e^{i theta_m} of the last evaluation, rows x replicas x [Re, Im]
   /// (R_n = |y_n| / N, psi_n = arg y_n: eq:localOrderParam).
   virtual const std::vector<double>& local_fields() const = 0;
+
+ private:
+  /// evaluate(), by each force.
+  virtual void compute(const RotorState& state, std::vector<double>& g, ForceSums& sums,
+                       ForceOutputs outputs) = 0;
 };
 
 }  // namespace hmfnet

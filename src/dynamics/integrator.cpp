@@ -36,17 +36,20 @@ void kick_drift_pass(RotorState& state, const std::vector<double>& K, const std:
 // each step's closing kick joins the next step's opening kick and drift in one pass (the same
 // operations on every cell in the same order: the same bits as step after step), the last
 // step's closing kick at the end. after_step runs on the master after each step's last force
-// evaluation, when f.sums() is that step's.
+// evaluation, when f.sums() is that step's. The sums are formed only where they are read: at a
+// step's last evaluation when after_step may read them, and at the last step's.
 void advance_splitting(RotorState& state, double h, const std::vector<double>& K,
                        ForceEvaluation& f, const std::vector<double>& kicks,
                        const std::vector<double>& drifts, std::int64_t steps,
                        const std::function<void()>& after_step) {
   for (std::int64_t n = 0; n < steps; ++n) {
+    const bool read = after_step || n + 1 == steps;
     for (std::size_t i = 0; i < drifts.size(); ++i) {
       KickDriftCoefficients c{{kicks[i] * h, 0.0}, 1, drifts[i] * h};
       if (i == 0 && n > 0) c = {{kicks.back() * h, kicks[0] * h}, 2, drifts[0] * h};
       kick_drift_pass(state, K, f.g(), c, true);
-      f.update(state);
+      f.update(state, read && i + 1 == drifts.size() ? ForceOutputs::force_and_sums
+                                                     : ForceOutputs::force_only);
     }
     if (after_step) master_only(after_step);
   }
@@ -247,14 +250,15 @@ void RungeKutta4::advance(RotorState& state, double h, const std::vector<double>
     m_theta_rate[k] = state.p[k];
     m_force_sum[k] = f.g()[k];
   }
+  // The stages' sums are never read: g alone (coupling_force.hpp).
   runge_kutta_stage(m_stage, state, 0.5 * h, K, f.g(), 2.0, m_theta_rate);
-  f.update(m_stage);
+  f.update(m_stage, ForceOutputs::force_only);
   accumulate(m_force_sum, 2.0, f.g());
   runge_kutta_stage(m_stage, state, 0.5 * h, K, f.g(), 2.0, m_theta_rate);
-  f.update(m_stage);
+  f.update(m_stage, ForceOutputs::force_only);
   accumulate(m_force_sum, 2.0, f.g());
   runge_kutta_stage(m_stage, state, h, K, f.g(), 1.0, m_theta_rate);
-  f.update(m_stage);
+  f.update(m_stage, ForceOutputs::force_only);
   accumulate(m_force_sum, 1.0, f.g());
   const auto width = static_cast<std::size_t>(state.replicas);
   const auto rows = static_cast<std::size_t>(state.rows);

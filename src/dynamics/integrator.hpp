@@ -29,15 +29,22 @@ class ForceEvaluation {
   explicit ForceEvaluation(CouplingForce& force) : m_force(&force) {}
   /// Sizes the buffers for `state`: outside a step's team, before it opens (team.hpp).
   void prepare(const RotorState& state) { m_force->prepare(state, m_g, m_sums); }
-  /// The force at `state`, by every thread of a step's team or outside one.
-  void update(const RotorState& state) {
+  /// The force at `state`, by every thread of a step's team or outside one; the sums too unless
+  /// `outputs` is force_only (coupling_force.hpp: for an evaluation no record reads).
+  void update(const RotorState& state, ForceOutputs outputs = ForceOutputs::force_and_sums) {
     if (outside_team()) prepare(state);
-    m_force->evaluate(state, m_g, m_sums);
+    m_force->evaluate(state, m_g, m_sums, outputs);
 #pragma omp master
-    ++m_count;
+    {
+      ++m_count;
+      m_sums_current = outputs == ForceOutputs::force_and_sums;
+    }
   }
   const std::vector<double>& g() const { return m_g; }
+  /// The sums of the last update; valid where sums_current() (an integrator forms them at a
+  /// step's last evaluation when after_step reads them, and at the last step's always).
   const ForceSums& sums() const { return m_sums; }
+  bool sums_current() const { return m_sums_current; }
   long long count() const { return m_count; }
   CouplingForce& force() { return *m_force; }
 
@@ -46,6 +53,7 @@ class ForceEvaluation {
   std::vector<double> m_g;
   ForceSums m_sums;
   long long m_count = 0;
+  bool m_sums_current = false;
 };
 
 class Integrator {

@@ -397,7 +397,8 @@ void NetworkForce::prepare(const RotorState& state, std::vector<double>& g, Forc
   prepare_segments(state.rows, nb);
 }
 
-void NetworkForce::evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) {
+void NetworkForce::compute(const RotorState& state, std::vector<double>& g, ForceSums& sums,
+                           ForceOutputs outputs) {
   if (outside_team()) prepare(state, g, sums);
   const int nb = state.replicas;
   const std::size_t cells = static_cast<std::size_t>(state.rows) * static_cast<std::size_t>(nb);
@@ -419,6 +420,9 @@ void NetworkForce::evaluate(const RotorState& state, std::vector<double>& g, For
     run_rows(m_weights_f32.empty() ? nullptr : m_weights_f32.data(), m_column_f32.data(),
              state.rows, nb, g);
   }
+  // The rows' terms are formed in their finish either way (a square root and a product a row
+  // and replica, next to its gathers); the ordered pass over them only where they are read.
+  if (outputs == ForceOutputs::force_only) return;
   // Both sums of every replica in one ordered pass (each column is summed on its own, so this
   // equals two separate passes bit for bit).
   m_sums.sum(m_terms.data(), m_term_sums.data());

@@ -43,7 +43,6 @@ class NetworkForce : public CouplingForce {
   void take_columns(DistributedNetwork& network);
 
   void prepare(const RotorState& state, std::vector<double>& g, ForceSums& sums) override;
-  void evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) override;
   EdgeOffset work_per_evaluation() const override { return m_nnz; }
   double lane_gather_cost(int lanes) const override;
   const char* name() const override {
@@ -61,6 +60,8 @@ class NetworkForce : public CouplingForce {
   const std::vector<double>& local_fields() const override { return m_y; }
 
  private:
+  void compute(const RotorState& state, std::vector<double>& g, ForceSums& sums,
+               ForceOutputs outputs) override;
   /// The row kernel in precision T over the weights (nullptr: 0/1) and gathered table in T.
   template <typename T>
   void run_rows(const T* weights, const T* column_cs, NodeIndex rows, int replicas,

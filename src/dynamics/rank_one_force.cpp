@@ -157,21 +157,25 @@ inline void field(const FieldArgs& f, double a, std::size_t k, std::size_t b, do
   ys = y.im;
 }
 
-// g_n of cell k (replica b), with the cell's terms of the order and coupling sums, |y_n| and
-// Re(e^{-i theta_n} y_n), added to acc.
+// g_n of cell k (replica b), with (Sums) the cell's terms of the order and coupling sums, |y_n|
+// and Re(e^{-i theta_n} y_n), added to acc.
+template <bool Sums>
 inline void field_one(const FieldArgs& f, double a, std::size_t k, std::size_t b, double* acc) {
   const double c = f.cs[2 * k], s = f.cs[2 * k + 1];
   double yc = 0.0, ys = 0.0;
   field(f, a, k, b, yc, ys);
   f.g[k] = f.inverse_n * (c * ys - s * yc);
-  acc[0] += std::sqrt(yc * yc + ys * ys);
-  acc[1] += c * yc + s * ys;
+  if constexpr (Sums) {
+    acc[0] += std::sqrt(yc * yc + ys * ys);
+    acc[1] += c * yc + s * ys;
+  }
 }
 
 #if defined(__SSE2__)
 // field_one for the cells k, k + 1 (replicas b, b + 1) in the two lanes of SSE2 registers: every
 // lane does field_one's IEEE operations in its order (sqrtpd rounds as sqrtsd), so the same bits,
-// with the sums' [order, coupling] of the two replicas kept as order[2] and coupling[2].
+// with (Sums) the sums' [order, coupling] of the two replicas kept as order[2] and coupling[2].
+template <bool Sums>
 inline void field_pair(const FieldArgs& f, double a, std::size_t k, std::size_t b, __m128d& order,
                        __m128d& coupling) {
   const __m128d v0 = _mm_loadu_pd(f.cs + 2 * k), v1 = _mm_loadu_pd(f.cs + 2 * k + 2);
@@ -187,15 +191,17 @@ inline void field_pair(const FieldArgs& f, double a, std::size_t k, std::size_t 
   }
   const __m128d torque = _mm_sub_pd(_mm_mul_pd(c, ys), _mm_mul_pd(s, yc));
   _mm_storeu_pd(f.g + k, _mm_mul_pd(_mm_set1_pd(f.inverse_n), torque));
-  order = _mm_add_pd(order, _mm_sqrt_pd(_mm_add_pd(_mm_mul_pd(yc, yc), _mm_mul_pd(ys, ys))));
-  coupling = _mm_add_pd(coupling, _mm_add_pd(_mm_mul_pd(c, yc), _mm_mul_pd(s, ys)));
+  if constexpr (Sums) {
+    order = _mm_add_pd(order, _mm_sqrt_pd(_mm_add_pd(_mm_mul_pd(yc, yc), _mm_mul_pd(ys, ys))));
+    coupling = _mm_add_pd(coupling, _mm_add_pd(_mm_mul_pd(c, yc), _mm_mul_pd(s, ys)));
+  }
 }
 #endif
 
-// The fields of one work item and its block's share of the order and coupling sums
+// The fields of one work item and (Sums) its block's share of the order and coupling sums
 // (sum |y_n|, sum Re(e^{-i theta_n} y_n)), summed as z_block sums: the same bits as storing the
-// terms and summing them with OrderedColumnSums::sum.
-template <std::size_t NB>
+// terms and summing them with OrderedColumnSums::sum. Without Sums, g alone (the same bits).
+template <std::size_t NB, bool Sums>
 void field_block(const Item& it, std::size_t w, const FieldArgs& f, double* out) {
   const std::size_t nb = NB > 0 ? NB : it.nb;
   double acc[2 * (NB > 0 ? NB : k_group)] = {};
@@ -210,10 +216,12 @@ void field_block(const Item& it, std::size_t w, const FieldArgs& f, double* out)
     const std::size_t k = r * w + it.b0;
 #if defined(__SSE2__)
     for (std::size_t p = 0; p < pairs; ++p)
-      field_pair(f, a, k + 2 * p, it.b0 + 2 * p, order[p], coupling[p]);
+      field_pair<Sums>(f, a, k + 2 * p, it.b0 + 2 * p, order[p], coupling[p]);
 #endif
-    for (std::size_t j = 2 * pairs; j < nb; ++j) field_one(f, a, k + j, it.b0 + j, acc + 2 * j);
+    for (std::size_t j = 2 * pairs; j < nb; ++j)
+      field_one<Sums>(f, a, k + j, it.b0 + j, acc + 2 * j);
   }
+  if constexpr (!Sums) return;
 #if defined(__SSE2__)
   for (std::size_t p = 0; p < pairs; ++p) {
     _mm_storeu_pd(acc + 4 * p, _mm_unpacklo_pd(order[p], coupling[p]));
@@ -260,6 +268,7 @@ HMFNET_AVX512 void z_block_avx512(const Item& it, std::size_t w, const double* a
 }
 
 // field_block for a group of 8 replicas.
+template <bool Sums>
 HMFNET_AVX512 void field_block_avx512(const Item& it, std::size_t w, const FieldArgs& f,
                                       double* out) {
   __m512d zc, zs;
@@ -280,12 +289,13 @@ HMFNET_AVX512 void field_block_avx512(const Item& it, std::size_t w, const Field
     }
     const __m512d torque = _mm512_sub_pd(_mm512_mul_pd(c, ys), _mm512_mul_pd(s, yc));
     _mm512_storeu_pd(f.g + k, _mm512_mul_pd(inverse_n, torque));
+    if constexpr (!Sums) continue;
     // All lanes of the masked form (GCC 12's unmasked one reads an undefined pass-through).
     const __m512d norm2 = _mm512_add_pd(_mm512_mul_pd(yc, yc), _mm512_mul_pd(ys, ys));
     order = _mm512_add_pd(order, _mm512_mask_sqrt_pd(norm2, 0xFF, norm2));
     coupling = _mm512_add_pd(coupling, _mm512_add_pd(_mm512_mul_pd(c, yc), _mm512_mul_pd(s, ys)));
   }
-  store_pairs(out + 2 * it.b0, order, coupling);
+  if constexpr (Sums) store_pairs(out + 2 * it.b0, order, coupling);
 }
 #undef HMFNET_AVX512
 
@@ -319,6 +329,7 @@ HMFNET_AVX2 void z_block_avx2(const Item& it, std::size_t w, const double* a, co
 }
 
 // field_block for a group of 8 replicas, replicas b0 + 4h .. b0 + 4h + 3 in half h.
+template <bool Sums>
 HMFNET_AVX2 void field_block_avx2(const Item& it, std::size_t w, const FieldArgs& f, double* out) {
   __m256d zc[2], zs[2], order[2], coupling[2];
   for (std::size_t h = 0; h < 2; ++h) {
@@ -340,12 +351,14 @@ HMFNET_AVX2 void field_block_avx2(const Item& it, std::size_t w, const FieldArgs
       }
       const __m256d torque = _mm256_sub_pd(_mm256_mul_pd(c, ys), _mm256_mul_pd(s, yc));
       _mm256_storeu_pd(f.g + k, _mm256_mul_pd(inverse_n, torque));
+      if constexpr (!Sums) continue;
       const __m256d norm2 = _mm256_add_pd(_mm256_mul_pd(yc, yc), _mm256_mul_pd(ys, ys));
       order[h] = _mm256_add_pd(order[h], _mm256_sqrt_pd(norm2));
       coupling[h] =
           _mm256_add_pd(coupling[h], _mm256_add_pd(_mm256_mul_pd(c, yc), _mm256_mul_pd(s, ys)));
     }
   }
+  if constexpr (!Sums) return;
   for (std::size_t h = 0; h < 2; ++h) {
     double o[4], c[4];
     _mm256_storeu_pd(o, order[h]);
@@ -365,7 +378,18 @@ SincosIsa item_isa(const Item& it) { return it.nb == k_group ? sincos_isa() : Si
 
 }  // namespace
 
-void RankOneForce::evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) {
+void RankOneForce::compute(const RotorState& state, std::vector<double>& g, ForceSums& sums,
+                           ForceOutputs outputs) {
+  if (outputs == ForceOutputs::force_only) {
+    evaluate_passes<false>(state, g, sums);
+  } else {
+    evaluate_passes<true>(state, g, sums);
+  }
+}
+
+template <bool Sums>
+void RankOneForce::evaluate_passes(const RotorState& state, std::vector<double>& g,
+                                   ForceSums& sums) {
   if (outside_team()) prepare(state, g, sums);
   const auto w = static_cast<std::size_t>(state.replicas);
   const auto rows = static_cast<std::size_t>(state.rows);
@@ -409,19 +433,20 @@ void RankOneForce::evaluate(const RotorState& state, std::vector<double>& g, For
 #if defined(HMFNET_RANK_ONE_X86)
     const SincosIsa isa = item_isa(it);
     if (isa == SincosIsa::avx512) {
-      field_block_avx512(it, w, f, m_sums.partial(it.block));
+      field_block_avx512<Sums>(it, w, f, m_sums.partial(it.block));
       continue;
     }
     if (isa == SincosIsa::avx2) {
-      field_block_avx2(it, w, f, m_sums.partial(it.block));
+      field_block_avx2<Sums>(it, w, f, m_sums.partial(it.block));
       continue;
     }
 #endif
     with_group_size(it, w, [&](auto nb) {
-      field_block<decltype(nb)::value>(it, w, f, m_sums.partial(it.block));
+      field_block<decltype(nb)::value, Sums>(it, w, f, m_sums.partial(it.block));
     });
   }
   // The loop's barrier above makes every block's sums visible to the master.
+  if constexpr (!Sums) return;
 #pragma omp master
   {
     m_sums.add_blocks(m_term_sums.data());

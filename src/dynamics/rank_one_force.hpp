@@ -39,7 +39,6 @@ class RankOneForce : public CouplingForce {
  public:
   RankOneForce(RankOneStructure structure, NodeIndex first_row, NodeIndex rows);
   void prepare(const RotorState& state, std::vector<double>& g, ForceSums& sums) override;
-  void evaluate(const RotorState& state, std::vector<double>& g, ForceSums& sums) override;
   EdgeOffset work_per_evaluation() const override { return m_rows; }
   EdgeOffset gathers_per_evaluation() const override { return 0; }  // rows only: thread_choice
   std::int64_t row_work() const override { return k_rank_one_row_work; }
@@ -49,6 +48,11 @@ class RankOneForce : public CouplingForce {
   const std::vector<double>& local_fields() const override;
 
  private:
+  void compute(const RotorState& state, std::vector<double>& g, ForceSums& sums,
+               ForceOutputs outputs) override;
+  /// The sin/cos, Z and field passes, with (Sums) the order and coupling sums.
+  template <bool Sums>
+  void evaluate_passes(const RotorState& state, std::vector<double>& g, ForceSums& sums);
   RankOneStructure m_structure;
   NodeIndex m_first_row;
   NodeIndex m_rows;

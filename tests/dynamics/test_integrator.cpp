@@ -208,6 +208,18 @@ void check_steps_against_step(CouplingForce& force, NodeIndex first_row, NodeInd
         CHECK(f_many.g() == f_one.g());
         CHECK(order_many == order_one);
         CHECK(f_many.count() == f_one.count());
+        // Without after_step only the last step forms the sums (coupling_force.hpp:
+        // ForceOutputs): the same state and the same last sums.
+        RotorState quiet = initial_state(first_row, rows, ics);
+        ForceEvaluation f_quiet(force);
+        f_quiet.update(quiet);
+        method->steps(quiet, 0.01, K, f_quiet, n, {});
+        CHECK(quiet.theta == one.theta);
+        CHECK(quiet.p == one.p);
+        CHECK(f_quiet.sums_current());
+        CHECK(f_quiet.sums().order == f_one.sums().order);
+        CHECK(f_quiet.sums().coupling == f_one.sums().coupling);
+        CHECK(f_many.sums().coupling == f_one.sums().coupling);
       }
     }
   }
