@@ -45,10 +45,10 @@ import json, re, sys
 runs = json.load(open(sys.argv[1]))["benchmarks"]
 rate, ladder, angle_ns, lines, lowest = {}, {}, {}, {}, {}
 for r in runs:
-    name = re.sub(r"/[a-z_]+:[0-9.]+|/real_time", "", r["name"]).split("/")
-    kind, args = name[0], tuple(int(a) for a in name[1:])
     if r.get("error_occurred") or r.get("run_type") == "aggregate":
         continue
+    name = re.sub(r"/[a-z_]+:[0-9.]+|/real_time", "", r["name"]).split("/")
+    kind, args = name[0], tuple(int(a) for a in name[1:])
     # The ceilings run in repetitions (bench_peak_rates.cpp): the best of them.
     if kind == "GatherLadder":
         ladder[args] = r["gathers_per_s"]
