@@ -35,10 +35,6 @@ inline Run run_of(const SegmentPass<T, I>& pass, NodeIndex r, EdgeOffset n) {
 template <typename T, int B>
 inline constexpr std::size_t k_registers = 8 * static_cast<std::size_t>(B) * sizeof(T) / 32;
 
-// A record of 2B values of T: 8 bytes (float32, B = 1) or 16 (float64, B = 1; float32, B = 2).
-template <typename T, int B>
-inline constexpr std::size_t k_record_bytes = 2 * static_cast<std::size_t>(B) * sizeof(T);
-
 HMFNET_AVX2 inline __m256d add_bits(__m256d acc, __m256d v, double /*type*/) {
   return _mm256_add_pd(acc, v);
 }

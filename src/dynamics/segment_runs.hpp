@@ -20,6 +20,11 @@
 
 namespace hmfnet {
 
+/// Bytes of one gathered record, the [cos, sin] pairs of B replicas in T: 8 (float32, B = 1),
+/// 16 (float64, B = 1; float32, B = 2) up to 128 (float64, B = 8).
+template <typename T, int B>
+inline constexpr std::size_t k_record_bytes = 2 * static_cast<std::size_t>(B) * sizeof(T);
+
 /// acc[b] += w q[b] for the n values of one gathered record. The lanes are independent sums, so
 /// vectorising them keeps each one's order (the same bits). GCC 12 leaves the float32 lanes
 /// scalar (addss and shuffles) unless told: `omp simd` doubles float32 B = 4 (bench/

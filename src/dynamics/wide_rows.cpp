@@ -134,9 +134,6 @@ HMFNET_LANES_INLINE void rows_body(const RowKernelArgs<T>& a, NodeIndex rows) {
   }
 }
 
-template <typename T, int B>
-inline constexpr std::size_t k_record_bytes = 2 * static_cast<std::size_t>(B) * sizeof(T);
-
 // 32 registers of 64 bytes; a record of 32 bytes takes a 32-byte register (AVX-512 has AVX2).
 template <typename T, int B, bool Weighted>
 __attribute__((target("avx512f,avx512dq"))) void rows_avx512(const RowKernelArgs<T>& a,
