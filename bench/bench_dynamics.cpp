@@ -197,6 +197,13 @@ BENCHMARK(SegmentedStep)
     ->ArgsProduct({{10000}, {100}, {1}, {0}, {0, 10}})
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
+// N = 10^4 with 8 replicas, whose 640 KB (float32) and 1.25 MB (float64) tables sit in L2: slices
+// down to L1's size, where the gathered lines would come from L1 (docs/performance.md, "Sums only
+// where a record reads them": the carried partials cost more than the misses they save).
+BENCHMARK(SegmentedStep)
+    ->ArgsProduct({{10000}, {100}, {8}, {0, 1}, {0, 16, 32, 64, 128, 256}})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 // Args: N, replicas, threads, self-loops (1: A = 1 1^T, the Antoni-Ruffo HMF; 0: K_N).
 BENCHMARK(RankOneStep)
     ->ArgsProduct({{2000, 20000}, {1, 16}, {1, 2}, {0, 1}})

@@ -8,7 +8,8 @@
 # Every step of those runs is sampled (--transient 0: R formed at every step); numpy forms no
 # observable, so the rows "-1-unsampled" (1 thread) run the same work as numpy: all but the last
 # 20 steps in the transient, where no record reads the sums and the force forms g alone
-# (coupling_force.hpp: ForceOutputs), over a longer T (99% and 90% of the steps unsampled).
+# (coupling_force.hpp: ForceOutputs; 99.9% of the steps at N = 400, 90% at N = 10^5, whose T
+# is doubled for them).
 # Usage: bench/rank_one_table.sh AFTER_HMFNET [BEFORE_HMFNET]  (PYTHON: a python3 with numpy)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <functional>
+#include <stdexcept>
 
 #include "dynamics/ordered_sum.hpp"
 
@@ -29,6 +30,10 @@ void HostStepper::advance(const Integrator& method, double h, const std::vector<
 }
 
 StepperSums HostStepper::sums() {
+  // A record reads the sums of the last evaluation, which the integrators form there
+  // (integrator.cpp); stale ones would pass for that state's silently.
+  if (!m_f.sums_current())
+    throw std::logic_error("HostStepper::sums: the last evaluation skipped them");
   const auto rows = static_cast<std::size_t>(m_state.rows);
   const int width = m_state.replicas;
   std::vector<double> p2(m_state.p.size()), absp(m_state.p.size());

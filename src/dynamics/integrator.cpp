@@ -238,6 +238,23 @@ void RungeKutta4::prepare(const RotorState& state) const {
 
 void RungeKutta4::advance(RotorState& state, double h, const std::vector<double>& K,
                           ForceEvaluation& f) const {
+  advance_one(state, h, K, f, ForceOutputs::force_and_sums);
+}
+
+// As advance_splitting: the sums at a step's closing evaluation where after_step may read them,
+// and at the last step's.
+void RungeKutta4::advance_steps(RotorState& state, double h, const std::vector<double>& K,
+                                ForceEvaluation& f, std::int64_t n,
+                                const std::function<void()>& after_step) const {
+  for (std::int64_t i = 0; i < n; ++i) {
+    const bool read = after_step || i + 1 == n;
+    advance_one(state, h, K, f, read ? ForceOutputs::force_and_sums : ForceOutputs::force_only);
+    if (after_step) master_only(after_step);
+  }
+}
+
+void RungeKutta4::advance_one(RotorState& state, double h, const std::vector<double>& K,
+                              ForceEvaluation& f, ForceOutputs last) const {
   // Butcher tableau of classical RK4 (Hairer, Norsett & Wanner I, Table II.1.2):
   // y1 = y0 + h/6 (k1 + 2 k2 + 2 k3 + k4), stages at c = 0, 1/2, 1/2, 1.
   // The scratch holds the start of the step (sized by prepare, outside the team; the loop's
@@ -271,7 +288,7 @@ void RungeKutta4::advance(RotorState& state, double h, const std::vector<double>
     }
   }
   // The new phases are not one of the stages: a fourth evaluation leaves f at the new state.
-  f.update(state);
+  f.update(state, last);
 }
 
 std::string integrator_names() { return "leapfrog, yoshida4, blanes_moan, rk4"; }

@@ -178,6 +178,11 @@ class RungeKutta4 : public Integrator {
  private:
   void advance(RotorState& state, double h, const std::vector<double>& K,
                ForceEvaluation& f) const override;
+  void advance_steps(RotorState& state, double h, const std::vector<double>& K, ForceEvaluation& f,
+                     std::int64_t n, const std::function<void()>& after_step) const override;
+  /// One step whose closing evaluation forms `last` (coupling_force.hpp: ForceOutputs).
+  void advance_one(RotorState& state, double h, const std::vector<double>& K, ForceEvaluation& f,
+                   ForceOutputs last) const;
   void prepare(const RotorState& state) const override;
   mutable RotorState m_stage;
   mutable std::vector<double> m_theta_rate;  // p1 + 2 p2 + 2 p3 + p4

@@ -10,6 +10,7 @@
 #include <limits>
 #include <vector>
 
+#include "dynamics/integrator.hpp"
 #include "dynamics/network_force.hpp"
 #include "dynamics/rank_one_force.hpp"
 #include "dynamics/team.hpp"
@@ -80,4 +81,18 @@ TEST_CASE("The sparse force's g alone has the bits of a full evaluation", "[forc
       }
     }
   }
+}
+
+TEST_CASE("A force evaluation says whether its sums are the last evaluation's", "[force_outputs]") {
+  const NodeIndex n = 100;
+  RankOneForce force(RankOneStructure{std::vector<double>(n, 1.0), false}, 0, n);
+  const RotorState s = replicas(0, n, 2);
+  ForceEvaluation f(force);
+  CHECK_FALSE(f.sums_current());
+  f.update(s);
+  CHECK(f.sums_current());
+  f.update(s, ForceOutputs::force_only);
+  CHECK_FALSE(f.sums_current());
+  f.update(s, ForceOutputs::force_and_sums);
+  CHECK(f.sums_current());
 }
