@@ -197,7 +197,7 @@ BENCHMARK(SegmentedStep)
     ->ArgsProduct({{10000}, {100}, {1}, {0}, {0, 10}})
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
-// N = 10^4 with 8 replicas, whose 640 KB (float32) and 1.25 MB (float64) tables sit in L2: slices
+// N = 10^4 with 8 replicas, whose 640 KB (float32) and 1.28 MB (float64) tables sit in L2: slices
 // down to L1's size, where the gathered lines would come from L1 (docs/performance.md, "Sums only
 // where a record reads them": the carried partials cost more than the misses they save).
 BENCHMARK(SegmentedStep)

@@ -8,8 +8,11 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <limits>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
+#include "dynamics/host_stepper.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/network_force.hpp"
 #include "dynamics/rank_one_force.hpp"
@@ -95,4 +98,40 @@ TEST_CASE("A force evaluation says whether its sums are the last evaluation's", 
   CHECK_FALSE(f.sums_current());
   f.update(s, ForceOutputs::force_and_sums);
   CHECK(f.sums_current());
+}
+
+namespace {
+
+// An integrator whose step ends with an evaluation of g alone, which none of the library's does:
+// what a record would read after it are sums of an earlier state.
+class SkipsSums : public Integrator {
+ public:
+  int order() const override { return 1; }
+  std::string name() const override { return "skips-sums"; }
+  int evaluations_per_step() const override { return 1; }
+  double stability_limit() const override { return 1.0; }
+
+ private:
+  void advance(RotorState& state, double /*h*/, const std::vector<double>& /*K*/,
+               ForceEvaluation& f) const override {
+    f.update(state, ForceOutputs::force_only);
+  }
+};
+
+}  // namespace
+
+TEST_CASE("The CPU stepper refuses sums that its last evaluation skipped", "[force_outputs]") {
+  const NodeIndex n = 100;
+  RankOneForce force(RankOneStructure{std::vector<double>(n, 1.0), false}, 0, n);
+  HostStepper stepper(force);
+  stepper.set_state(replicas(0, n, 2));
+  CHECK_NOTHROW(stepper.sums());
+  const std::vector<double> K(2, 1.0);
+  for (const std::string name : {"leapfrog", "yoshida4", "blanes_moan", "rk4"}) {
+    INFO(name);
+    stepper.advance(*make_integrator(name), 0.01, K, 3, nullptr);
+    CHECK_NOTHROW(stepper.sums());
+  }
+  stepper.advance(SkipsSums(), 0.01, K, 1, nullptr);
+  CHECK_THROWS_AS(stepper.sums(), std::logic_error);
 }
