@@ -7,8 +7,11 @@
 //   sum_n Re(e^{-i theta_n} y_n)     -> U = -(K / 2N) * that               (potential energy)
 // The sums are over this rank's rows and summed in an order that does not depend on the thread
 // count; the caller reduces them over ranks.
+#include <stdexcept>
+#include <string>
 #include <vector>
 
+#include "dynamics/kick_drift_lanes.hpp"
 #include "dynamics/rotor_state.hpp"
 #include "dynamics/thread_choice.hpp"
 
@@ -41,6 +44,21 @@ class CouplingForce {
                 ForceOutputs outputs = ForceOutputs::force_and_sums) {
     compute(state, g, sums, outputs);
   }
+  /// Whether kick_drift_evaluate() can take `state`: a force that applies the kick-drift pass
+  /// and evaluates at the new phases in one pass over the cells (the rank-one force, in whole
+  /// groups of replicas, where its last evaluation was at `state`'s phases). Called by every
+  /// thread of a team alike; the same answer for every call of one Integrator::steps().
+  virtual bool fuses_kick_drift(const RotorState& /*state*/) const { return false; }
+  /// The pass `c` (kick_drift_lanes.hpp: p += c_i K_b g, theta += c.drift p) with the force of
+  /// the last evaluation, formed again from the force's own data, then evaluate() at the new
+  /// phases, in one pass; where fuses_kick_drift(state). The bits of the pass over g, then
+  /// evaluate(). After a force_only call g is not formed: it still holds an earlier evaluation's
+  /// force (ForceEvaluation::kick_drift_update).
+  void kick_drift_evaluate(RotorState& state, const std::vector<double>& K,
+                           const KickDriftCoefficients& c, std::vector<double>& g, ForceSums& sums,
+                           ForceOutputs outputs) {
+    compute_kick_drift(state, K, c, g, sums, outputs);
+  }
   /// Stored entries of A this rank reads per evaluation (for throughput figures).
   virtual EdgeOffset work_per_evaluation() const = 0;
   /// Stored entries gathered per evaluation, for the default thread count (thread_choice.hpp):
@@ -62,6 +80,12 @@ class CouplingForce {
   /// evaluate(), by each force.
   virtual void compute(const RotorState& state, std::vector<double>& g, ForceSums& sums,
                        ForceOutputs outputs) = 0;
+  /// kick_drift_evaluate(), by a force that fuses them.
+  virtual void compute_kick_drift(RotorState& /*state*/, const std::vector<double>& /*K*/,
+                                  const KickDriftCoefficients& /*c*/, std::vector<double>& /*g*/,
+                                  ForceSums& /*sums*/, ForceOutputs /*outputs*/) {
+    throw std::logic_error(std::string(name()) + ": no fused kick-drift pass");
+  }
 };
 
 }  // namespace hmfnet

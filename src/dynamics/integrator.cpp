@@ -47,9 +47,9 @@ void advance_splitting(RotorState& state, double h, const std::vector<double>& K
     for (std::size_t i = 0; i < drifts.size(); ++i) {
       KickDriftCoefficients c{{kicks[i] * h, 0.0}, 1, drifts[i] * h};
       if (i == 0 && n > 0) c = {{kicks.back() * h, kicks[0] * h}, 2, drifts[0] * h};
-      kick_drift_pass(state, K, f.g(), c, true);
-      f.update(state, read && i + 1 == drifts.size() ? ForceOutputs::force_and_sums
-                                                     : ForceOutputs::force_only);
+      f.kick_drift_update(
+          state, K, c,
+          read && i + 1 == drifts.size() ? ForceOutputs::force_and_sums : ForceOutputs::force_only);
     }
     if (after_step) master_only(after_step);
   }
@@ -67,6 +67,22 @@ const std::vector<double>& leapfrog_drifts() {
 }
 
 }  // namespace
+
+void ForceEvaluation::kick_drift_update(RotorState& state, const std::vector<double>& K,
+                                        const KickDriftCoefficients& c, ForceOutputs outputs) {
+  if (!m_force->fuses_kick_drift(state)) {
+    kick_drift_pass(state, K, m_g, c, true);
+    update(state, outputs);
+    return;
+  }
+  if (outside_team()) prepare(state);
+  m_force->kick_drift_evaluate(state, K, c, m_g, m_sums, outputs);
+#pragma omp master
+  {
+    ++m_count;
+    m_sums_current = outputs == ForceOutputs::force_and_sums;
+  }
+}
 
 void kick(RotorState& state, double c, const std::vector<double>& K, const std::vector<double>& g) {
   kick_drift_pass(state, K, g, {{c, 0.0}, 1, 0.0}, false);

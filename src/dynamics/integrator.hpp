@@ -40,6 +40,13 @@ class ForceEvaluation {
       m_sums_current = outputs == ForceOutputs::force_and_sums;
     }
   }
+  /// The kick-drift pass `c` over the cells with g(), then update() at the new phases; where the
+  /// force fuses them (CouplingForce::fuses_kick_drift: its last evaluation was at `state`'s
+  /// phases), one pass that forms g() again from the force's own data, the same bits. After a
+  /// fused force_only call g() is not the new force: the next call forms it again, and a
+  /// force_and_sums call forms it (a splitting's last step always does).
+  void kick_drift_update(RotorState& state, const std::vector<double>& K,
+                         const KickDriftCoefficients& c, ForceOutputs outputs);
   const std::vector<double>& g() const { return m_g; }
   /// The sums of the last update; valid where sums_current() (an integrator forms them at a
   /// step's last evaluation when after_step reads them, and at the last step's always).

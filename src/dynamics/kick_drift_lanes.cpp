@@ -1,31 +1,17 @@
 #include "dynamics/kick_drift_lanes.hpp"
 
-#include <cstring>
-
 #include "dynamics/kernel_arithmetic.hpp"
+#include "dynamics/vector_lanes.hpp"
 
 namespace hmfnet {
 
 namespace {
 
-// Four lanes: two SSE2 registers on the x86-64 baseline, one AVX2 register.
-using VecD4 = double __attribute__((vector_size(4 * sizeof(double))));
-
-// Inlined into each instruction-set version below, so that no vector crosses a function compiled
-// for another set.
-#define HMFNET_INLINE inline __attribute__((always_inline))
-
-template <typename V>
-HMFNET_INLINE V load(const double* x) {
-  V v;
-  std::memcpy(&v, x, sizeof v);
-  return v;
-}
-
-template <typename V>
-HMFNET_INLINE void store(double* x, const V& v) {
-  std::memcpy(x, &v, sizeof v);
-}
+// Four lanes: two SSE2 registers on the x86-64 baseline, one AVX2 register; everything inlined
+// into each instruction-set version below (vector_lanes.hpp).
+using simd::load;
+using simd::store;
+using simd::VecD4;
 
 // x in every lane, by copies (V{} + x would turn -0.0 into +0.0).
 template <typename V>

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <stdexcept>
 #include <type_traits>
 
 #if defined(__SSE2__)
@@ -14,6 +16,7 @@
 
 #include "dynamics/kernel_arithmetic.hpp"
 #include "dynamics/ordered_sum.hpp"
+#include "dynamics/rank_one_fused.hpp"
 #include "dynamics/sincos.hpp"
 #include "dynamics/team.hpp"
 #include "parallel/parallel_session.hpp"
@@ -96,7 +99,7 @@ namespace {
 // sums (which the compiler must assume the inputs may alias). The lanes are independent sums,
 // so how the replicas are grouped changes no bit; groups share a block out between threads when
 // there are few blocks (N = 2000 is one block of the ordered sums).
-constexpr std::size_t k_group = 8;
+constexpr std::size_t k_group = k_fused_group;
 
 // One work item: rows [r0, r1) of block `block` of the ordered sums, replicas [b0, b0 + nb).
 struct Item {
@@ -376,6 +379,27 @@ HMFNET_AVX2 void field_block_avx2(const Item& it, std::size_t w, const FieldArgs
 SincosIsa item_isa(const Item& it) { return it.nb == k_group ? sincos_isa() : SincosIsa::baseline; }
 #endif
 
+// z_block of one work item in its instruction set.
+void z_item(const Item& it, std::size_t w, const double* a, const double* cs, double* out) {
+#if defined(HMFNET_RANK_ONE_X86)
+  const SincosIsa isa = item_isa(it);
+  if (isa == SincosIsa::avx512) return z_block_avx512(it, w, a, cs, out);
+  if (isa == SincosIsa::avx2) return z_block_avx2(it, w, a, cs, out);
+#endif
+  with_group_size(it, w, [&](auto nb) { z_block<decltype(nb)::value>(it, w, a, cs, out); });
+}
+
+// field_block of one work item in its instruction set.
+template <bool Sums>
+void field_item(const Item& it, std::size_t w, const FieldArgs& f, double* out) {
+#if defined(HMFNET_RANK_ONE_X86)
+  const SincosIsa isa = item_isa(it);
+  if (isa == SincosIsa::avx512) return field_block_avx512<Sums>(it, w, f, out);
+  if (isa == SincosIsa::avx2) return field_block_avx2<Sums>(it, w, f, out);
+#endif
+  with_group_size(it, w, [&](auto nb) { field_block<decltype(nb)::value, Sums>(it, w, f, out); });
+}
+
 }  // namespace
 
 void RankOneForce::compute(const RotorState& state, std::vector<double>& g, ForceSums& sums,
@@ -401,49 +425,39 @@ void RankOneForce::evaluate_passes(const RotorState& state, std::vector<double>&
   // only after their worksharing barrier.
   sincos_interleaved_team(state.theta.data(), rows * w, m_cs.data());
   // Z_b = sum_m a_m e^{i theta_m}: each block's ordered sum, then the blocks in order, then over
-  // ranks (MPI on the master thread; the barrier after it gives every thread the reduced Z).
-  // Formed as they are summed, never stored: one replica costs ~17 ns a rotor when a [cos, sin]
-  // table scaled by a_n was written, summed, then overwritten by the terms and summed again.
+  // ranks. Formed as they are summed, never stored: one replica costs ~17 ns a rotor when a
+  // [cos, sin] table scaled by a_n was written, summed, then overwritten by the terms and summed
+  // again.
 #pragma omp for schedule(static)
   for (std::size_t i = 0; i < items; ++i) {
     const Item it = item(m_z_sums, i, w);
-#if defined(HMFNET_RANK_ONE_X86)
-    const SincosIsa isa = item_isa(it);
-    if (isa == SincosIsa::avx512) {
-      z_block_avx512(it, w, a, m_cs.data(), m_z_sums.partial(it.block));
-      continue;
-    }
-    if (isa == SincosIsa::avx2) {
-      z_block_avx2(it, w, a, m_cs.data(), m_z_sums.partial(it.block));
-      continue;
-    }
-#endif
-    with_group_size(it, w, [&](auto nb) {
-      z_block<decltype(nb)::value>(it, w, a, m_cs.data(), m_z_sums.partial(it.block));
-    });
+    z_item(it, w, a, m_cs.data(), m_z_sums.partial(it.block));
   }
+  reduce_z(state, g.data());
+  field_pass<Sums>(state, g, sums);
+}
+
+void RankOneForce::reduce_z(const RotorState& state, const double* g_formed) {
+  // MPI on the master thread; the barrier after it gives every thread the reduced Z, and what it
+  // belongs to (read by the next fused pass's threads before the master writes them again).
   on_master([&] {
     m_z_sums.add_blocks(m_z.data());
     ParallelSession::sum_in_place(m_z);
+    m_evaluated_theta = state.theta.data();
+    m_formed_g = g_formed;
   });
+}
+
+template <bool Sums>
+void RankOneForce::field_pass(const RotorState& state, std::vector<double>& g, ForceSums& sums) {
+  const auto w = static_cast<std::size_t>(state.replicas);
+  const double* a = m_structure.a.data() + m_first_row;
+  const std::size_t items = m_sums.blocks() * groups(w);
   const FieldArgs f{a, m_cs.data(), m_z.data(), m_inverse_n, m_structure.diagonal, g.data()};
 #pragma omp for schedule(static)
   for (std::size_t i = 0; i < items; ++i) {
     const Item it = item(m_sums, i, w);
-#if defined(HMFNET_RANK_ONE_X86)
-    const SincosIsa isa = item_isa(it);
-    if (isa == SincosIsa::avx512) {
-      field_block_avx512<Sums>(it, w, f, m_sums.partial(it.block));
-      continue;
-    }
-    if (isa == SincosIsa::avx2) {
-      field_block_avx2<Sums>(it, w, f, m_sums.partial(it.block));
-      continue;
-    }
-#endif
-    with_group_size(it, w, [&](auto nb) {
-      field_block<decltype(nb)::value, Sums>(it, w, f, m_sums.partial(it.block));
-    });
+    field_item<Sums>(it, w, f, m_sums.partial(it.block));
   }
   // The loop's barrier above makes every block's sums visible to the master.
   if constexpr (!Sums) return;
@@ -455,6 +469,64 @@ void RankOneForce::evaluate_passes(const RotorState& state, std::vector<double>&
       sums.coupling[b] = m_term_sums[2 * b + 1];
     }
   }
+}
+
+bool RankOneForce::fuses_kick_drift(const RotorState& state) const {
+  const auto w = static_cast<std::size_t>(state.replicas);
+  if (w == 0 || w % k_fused_group != 0) return false;
+  // The pass forms the last evaluation's field from this force's own [cos, sin] and Z: they
+  // must be those of `state` (not of another state this force evaluated since), as g is.
+  if (state.theta.data() != m_evaluated_theta) return false;
+  const auto rows = static_cast<std::size_t>(state.rows);
+  const std::size_t blocks =
+      (rows + OrderedColumnSums::k_block_rows - 1) / OrderedColumnSums::k_block_rows;
+  const std::size_t items = blocks * groups(w);
+  const auto threads = static_cast<std::size_t>(omp_get_num_threads());
+  if (threads == 1) return true;
+  // Measured on K_N N = 2000 (one block), 2 threads: 24 replicas (3 items) 0.78x the separate
+  // passes, 16 (2 items, two threads writing the cache lines where the groups meet) 0.94x.
+  // With a block or more a thread, and the items shared evenly or at least 4 a thread (the last
+  // round's idle share <= 1/5), the threads' cells are mostly whole rows apart.
+  return blocks >= threads && (items % threads == 0 || items >= 4 * threads);
+}
+
+void RankOneForce::compute_kick_drift(RotorState& state, const std::vector<double>& K,
+                                      const KickDriftCoefficients& c, std::vector<double>& g,
+                                      ForceSums& sums, ForceOutputs outputs) {
+  if (outside_team()) prepare(state, g, sums);
+  const auto w = static_cast<std::size_t>(state.replicas);
+  const double* a = m_structure.a.data() + m_first_row;
+  const std::size_t items = m_z_sums.blocks() * groups(w);
+#pragma omp master
+  m_y_current = false;
+  // fuses_kick_drift(state) is the caller's to check: a tail group would run past the rows.
+  // Outside a team a wrong call can throw; inside one an exception would end the process anyway.
+  if (w % k_fused_group != 0) {
+    if (outside_team()) throw std::logic_error("RankOneForce: a fused pass needs whole groups");
+    std::abort();
+  }
+  // Every item reads the last evaluation's Z and its own cells' [cos, sin] before it overwrites
+  // them, and the master writes the new Z only after the loop's barrier.
+  // The last evaluation's g where it formed it into this g (a sampled step's field pass).
+  const RankOneFusedCells fused{a,
+                                m_cs.data(),
+                                m_z.data(),
+                                m_formed_g == g.data() ? g.data() : nullptr,
+                                m_inverse_n,
+                                m_structure.diagonal,
+                                state.p.data(),
+                                state.theta.data(),
+                                K.data(),
+                                w};
+#pragma omp for schedule(static)
+  for (std::size_t i = 0; i < items; ++i) {
+    const Item it = item(m_z_sums, i, w);
+    rank_one_fused_group(sincos_isa(), fused, c, it.r0, it.r1, it.b0, m_z_sums.partial(it.block));
+  }
+  reduce_z(state, outputs == ForceOutputs::force_and_sums ? g.data() : nullptr);
+  // g at the new phases only where the sums are formed: a force_only call leaves the last
+  // evaluation's g (coupling_force.hpp), which the next fused call forms again from its own data.
+  if (outputs == ForceOutputs::force_and_sums) field_pass<true>(state, g, sums);
 }
 
 const std::vector<double>& RankOneForce::local_fields() const {

@@ -8,12 +8,16 @@
 // detect_rank_one finds the structure, and checked against the sparse path in tests. Two passes
 // over the rows after the sin/cos, each summing as it goes (Z; then g with the order and
 // coupling sums), the same bits as storing the terms and summing them (tests/dynamics/
-// test_rank_one_force.cpp).
+// test_rank_one_force.cpp). Inside a splitting's steps, whole groups of 8 replicas take the
+// kick, the drift, the sin/cos and Z in one pass instead, where the groups share out over the
+// threads (kick_drift_evaluate, fuses_kick_drift; rank_one_fused.hpp), the field pass following
+// only where the sums are read.
 #include <optional>
 #include <vector>
 
 #include "dynamics/coupling_force.hpp"
 #include "dynamics/ordered_sum.hpp"
+#include "dynamics/rank_one_fused.hpp"
 #include "dynamics/thread_choice.hpp"
 #include "network/complete_graph.hpp"
 #include "parallel/distributed_network.hpp"
@@ -43,6 +47,11 @@ class RankOneForce : public CouplingForce {
   EdgeOffset gathers_per_evaluation() const override { return 0; }  // rows only: thread_choice
   std::int64_t row_work() const override { return k_rank_one_row_work; }
   const char* name() const override { return "rank-one"; }
+  /// Whole groups of k_fused_group replicas (rank_one_fused.hpp: a tail would pad a vector of
+  /// sin/cos per cell), with the work items (blocks of the ordered sums x groups) shared evenly
+  /// enough over the team (the separate passes share the sin/cos and the kick-drift cell by
+  /// cell), and the last evaluation at `state`'s phases. Called by every thread of the team.
+  bool fuses_kick_drift(const RotorState& state) const override;
   const RankOneStructure& structure() const { return m_structure; }
   /// Formed from the last evaluation on first call after it (outside a team: not thread-safe).
   const std::vector<double>& local_fields() const override;
@@ -50,15 +59,29 @@ class RankOneForce : public CouplingForce {
  private:
   void compute(const RotorState& state, std::vector<double>& g, ForceSums& sums,
                ForceOutputs outputs) override;
+  /// One pass over the cells (rank_one_fused_group per work item): the field at the last
+  /// evaluation's [cos, sin] and Z, the kicks and the drift, the new sin/cos and Z; then, with
+  /// the sums, the field pass.
+  void compute_kick_drift(RotorState& state, const std::vector<double>& K,
+                          const KickDriftCoefficients& c, std::vector<double>& g, ForceSums& sums,
+                          ForceOutputs outputs) override;
   /// The sin/cos, Z and field passes, with (Sums) the order and coupling sums.
   template <bool Sums>
   void evaluate_passes(const RotorState& state, std::vector<double>& g, ForceSums& sums);
+  /// Z from the blocks' partial sums, over ranks, as the phases of `state`'s, whose g this
+  /// evaluation forms into `g_formed` (nullptr: it does not); a barrier after it.
+  void reduce_z(const RotorState& state, const double* g_formed);
+  /// g at the current [cos, sin] and Z, with (Sums) the order and coupling sums.
+  template <bool Sums>
+  void field_pass(const RotorState& state, std::vector<double>& g, ForceSums& sums);
   RankOneStructure m_structure;
   NodeIndex m_first_row;
   NodeIndex m_rows;
   double m_inverse_n;
-  std::vector<double> m_cs;  // rows x replicas x [cos, sin]: once per evaluation
-  std::vector<double> m_z;   // replicas x [Re Z, Im Z]
+  std::vector<double> m_cs;                   // rows x replicas x [cos, sin]: once per evaluation
+  std::vector<double> m_z;                    // replicas x [Re Z, Im Z]
+  const double* m_evaluated_theta = nullptr;  // the phases m_cs and m_z belong to
+  const double* m_formed_g = nullptr;         // where their g was formed, if it was
   OrderedColumnSums m_z_sums;
   mutable std::vector<double> m_y;  // rows x replicas x [Re y, Im y], formed on demand
   mutable bool m_y_current = false;

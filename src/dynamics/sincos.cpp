@@ -8,86 +8,15 @@
 #include <type_traits>
 
 #include "dynamics/kernel_arithmetic.hpp"
+#include "dynamics/vector_lanes.hpp"
 
 namespace hmfnet {
 
 namespace {
 
-// Lanes in GCC/Clang vector types: four for the x86-64 baseline (two SSE2 registers) and AVX2
-// (one register), eight for AVX-512 (one register). Every lane does the same IEEE operations as
-// every other, and the tail is computed in a padded vector, so an angle's bits never depend on
-// its place in the array or on the vector width.
-using VecD4 = double __attribute__((vector_size(4 * sizeof(double))));
-using VecU4 = std::uint64_t __attribute__((vector_size(4 * sizeof(double))));
-using VecD8 = double __attribute__((vector_size(8 * sizeof(double))));
-using VecU8 = std::uint64_t __attribute__((vector_size(8 * sizeof(double))));
-
-// Everything below is inlined into each instruction-set version (sincos_block_baseline, _avx2,
-// _avx512), so that the vectors stay in registers of that set and no 32- or 64-byte vector is
-// ever passed between functions compiled for different sets (what GCC's -Wpsabi note is about).
-#define HMFNET_INLINE inline __attribute__((always_inline))
-
-template <typename To, typename From>
-HMFNET_INLINE To bits_as(const From& from) {
-  static_assert(sizeof(To) == sizeof(From), "a reinterpretation keeps the size");
-  To to;
-  std::memcpy(&to, &from, sizeof to);
-  return to;
-}
-
-// The lanes of the shared sincos template (kernel_arithmetic.hpp: sincos_lanes, which a CUDA
-// device and sincos_one also instantiate, on one double): the same operations, so the same bits
-// by construction.
-// Masks: with MaskRegisters (AVX-512), a comparison's result used in selections, which AVX-512
-// holds in a mask register and selects with in one blend (five fewer vector instructions a
-// vector than the bit formula: 1.59 -> 1.43 ns an angle, docs/performance.md "sincos selections
-// in mask registers"); otherwise -1 or 0 per lane combined by and/or: SSE2 has no 64-bit
-// comparison (the comparisons made the baseline 1.17x slower) and AVX2's blends measured no
-// faster. Both select without arithmetic: the same bits.
-template <typename D, typename U, bool MaskRegisters>
-struct VectorLanes {
-  using Real = D;
-  using Bits = U;
-  using Mask = std::conditional_t<MaskRegisters, decltype(U{} <= U{}), U>;
-  static constexpr std::size_t k_lanes = sizeof(D) / sizeof(double);
-  static HMFNET_INLINE Bits bits(const Real& x) { return bits_as<Bits>(x); }
-  static HMFNET_INLINE Real real(const Bits& b) { return bits_as<Real>(b); }
-  static HMFNET_INLINE Mask at_most(const Bits& a, std::uint64_t b) {
-    return bits_as<Mask>(a <= b);
-  }
-  static HMFNET_INLINE Mask odd(const Bits& a) {
-    if constexpr (MaskRegisters) {
-      return (a & 1U) != 0U;
-    } else {
-      return 0U - (a & 1U);
-    }
-  }
-  static HMFNET_INLINE Bits select(const Mask& m, const Bits& a, const Bits& b) {
-    if constexpr (MaskRegisters) {
-      return m ? a : b;
-    } else {
-      return (a & m) | (b & ~m);
-    }
-  }
-};
-using Lanes4 = VectorLanes<VecD4, VecU4, false>;
-using Lanes8 = VectorLanes<VecD8, VecU8, true>;
-
-// [c0, s0, c1, s1, ...] as two vectors of the lanes' width: register shuffles (unpack and
-// permute) instead of one scalar store per value, which cost ~1 ns an angle in the AVX2 version.
-HMFNET_INLINE void store_interleaved(const VecD4& c, const VecD4& s, double* cs) {
-  const VecD4 lo = __builtin_shufflevector(c, s, 0, 4, 1, 5);
-  const VecD4 hi = __builtin_shufflevector(c, s, 2, 6, 3, 7);
-  std::memcpy(cs, &lo, sizeof lo);
-  std::memcpy(cs + 4, &hi, sizeof hi);
-}
-
-HMFNET_INLINE void store_interleaved(const VecD8& c, const VecD8& s, double* cs) {
-  const VecD8 lo = __builtin_shufflevector(c, s, 0, 8, 1, 9, 2, 10, 3, 11);
-  const VecD8 hi = __builtin_shufflevector(c, s, 4, 12, 5, 13, 6, 14, 7, 15);
-  std::memcpy(cs, &lo, sizeof lo);
-  std::memcpy(cs + 8, &hi, sizeof hi);
-}
+using simd::Lanes4;
+using simd::Lanes8;
+using simd::store_interleaved;
 
 template <typename Lanes>
 HMFNET_INLINE void sincos_block(const double* x, std::size_t n, double* cs) {
