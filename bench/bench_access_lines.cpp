@@ -260,8 +260,8 @@ void AccessLines(benchmark::State& state) {
   const std::size_t value = state.range(4) == 0 ? sizeof(double) : sizeof(float);
   const std::size_t record = 2 * replicas * value;
   const NodeIndex rows = net.size();
-  const NodeIndex width = automatic_segment_width(rows, net.nnz(), rows, record, l2_cache_bytes(),
-                                                  available_memory_bytes());
+  const NodeIndex width = automatic_segment_width(
+      rows, net.nnz(), rows, record, this_cpu_caches(threads), available_memory_bytes());
   const int segments =
       width >= rows ? 1 : static_cast<int>((static_cast<std::int64_t>(rows) + width - 1) / width);
   // The walks of the unblocked kernel this CPU runs (dynamics/wide_rows.hpp).

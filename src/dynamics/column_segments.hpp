@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "dynamics/run_lengths.hpp"
@@ -25,6 +26,39 @@ std::size_t l2_cache_bytes();
 /// Used where neither source answers: the smallest per-core L2 of the machines measured so far
 /// (AMD EPYC: 512 KiB; Intel Xeon: 2 MiB), so a slice sized by it fits on both.
 inline constexpr std::size_t k_default_l2_bytes = std::size_t{512} << 10;
+
+/// The L3 cache that cpu0 shares, in bytes: the level-3 entry of
+/// /sys/devices/system/cpu/cpu0/cache, else sysconf(_SC_LEVEL3_CACHE_SIZE), else 0. Read once.
+std::size_t l3_cache_bytes();
+
+/// The caches a segment's slice of the table can live in, in bytes (l3 0: none known), and the
+/// threads that share the L3: each walks its rows through the segments without waiting for the
+/// others, so each may hold a slice of its own there.
+struct CacheSizes {
+  std::size_t l2 = k_default_l2_bytes;
+  std::size_t l3 = 0;
+  int l3_threads = 1;
+};
+
+/// The CPUs of a sysfs CPU list ("0-7,64-71": 16, at most 2^20); 0 where it does not parse.
+int cpu_list_count(const std::string& list);
+
+/// This CPU's (l2_cache_bytes(), l3_cache_bytes()) for a team of `threads`: at least one, at
+/// most the CPUs that share cpu0's L3 (sysfs shared_cpu_list), as threads beyond those run on
+/// other L3s.
+CacheSizes this_cpu_caches(int threads);
+
+/// An L3 smaller than this is taken as a core complex's own, close enough to hold the
+/// segments' slices: the AMD EPYC's 8 MiB (512 KiB L2), where ER N = 10^6, degree 100, float64,
+/// one replica ran 1.8x faster in slices of 4 MiB than of 1 MiB and a table of 0.6-1.3 MB
+/// (N = 10^4, 4 and 8 replicas) 2x faster unsegmented than in L2 slices; the Intel Xeon's 260 MiB
+/// (2 MiB L2), a whole socket's L3, is not, nor the AMD EPYC's socket-wide 64 MiB that glibc
+/// reports where sysfs does not answer: on the Intel Xeon slices of 1 MiB beat 4 MiB ones
+/// (docs/performance.md, "Segment slices in a core complex's L3").
+inline constexpr std::size_t k_near_l3_max_bytes = std::size_t{64} << 20;
+
+/// Whether the slices live in L3 (a near one, more than twice the L2) rather than in L2.
+bool slices_in_l3(CacheSizes caches);
 
 /// Segments hold at least this many stored entries per row on average: each row pays, per
 /// segment, a carry of its four partial sums of every replica (read and written) and a short
@@ -66,18 +100,24 @@ std::size_t segmented_bytes(EdgeOffset nnz, NodeIndex rows, int segments, NodeIn
                             std::size_t record_bytes);
 
 /// The rule: the whole column space (one segment) when the table, columns x record_bytes, fits
-/// in `l2_bytes`; else as many segments as slices of half the L2 (the other half holds the
-/// streams of column indices, run lengths and carried sums; 1 MiB slices measured faster than
-/// 512 KiB and 2 MiB ones on the 2 MiB L2 of the Intel Xeon), but no more than leave
+/// in the L2; else as many segments as slices of half the cache they live in (slices_in_l3:
+/// the L3 where it is a core complex's own, shared by the team's threads, else the L2; at two
+/// threads on the AMD EPYC, float64 with one replica ran 0.84x as fast as in the L2 rule's 1 MiB
+/// slices in slices of 4 MiB, 1.19x in 2 MiB; the other half holds the streams of
+/// column indices, run lengths and carried sums; 1 MiB slices measured faster than 512 KiB and
+/// 2 MiB ones on the 2 MiB L2 of the Intel Xeon), but no more than leave
 /// k_min_entries_per_segment entries per row and segment, and one segment when that leaves
 /// fewer than two, or when the segments' memory (segmented_bytes: +346 MB at ER N = 10^6,
 /// degree 100, float64, 8 replicas) exceeds half of `memory_bytes`: a network that runs
 /// unblocked is never pushed out of memory for the speed-up (counted as added even where the
 /// force takes the network's indices and the copy replaces them: the rule errs on the side of
-/// memory). record_bytes = 2 x replicas x
-/// sizeof(the table's type).
+/// memory). Slices in L3 also leave the rows unblocked where the carried sums would move more
+/// bytes than the gathered lines they save, both from memory (a record of 64 bytes or more fills
+/// its lines: float64 with 4 and 8 replicas, float32 with 8, ran 1.2-2.2x faster unsegmented
+/// at N = 10^6 on the AMD EPYC); an L3 as large as the Intel Xeon's holds the carry. record_bytes
+/// = 2 x replicas x sizeof(the table's type).
 NodeIndex automatic_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex rows,
-                                  std::size_t record_bytes, std::size_t l2_bytes,
+                                  std::size_t record_bytes, CacheSizes caches,
                                   std::size_t memory_bytes);
 
 /// Segments of at most this many columns keep their column indices in 16 bits, relative to the

@@ -355,7 +355,11 @@ void NetworkForce::prepare_segments(NodeIndex rows, int replicas) {
   // prepare runs before every evaluation outside a team (each step on one thread), and the
   // automatic rule reads /proc/meminfo and the cache size: decided once per shape (14 us a step
   // measured on ER N = 1000, degree 4, where a whole step took 10 us before the rule).
-  if (rows == m_segmented_rows && replicas == m_segmented_replicas) return;
+  const int threads = omp_get_max_threads();  // the team of the evaluations that follow
+  if (rows == m_segmented_rows && replicas == m_segmented_replicas &&
+      threads == m_segmented_threads) {
+    return;
+  }
   const std::size_t value_bytes =
       m_precision == ForcePrecision::float64 ? sizeof(double) : sizeof(float);
   const NodeIndex width =
@@ -363,7 +367,7 @@ void NetworkForce::prepare_segments(NodeIndex rows, int replicas) {
           ? m_segment_request
           : automatic_segment_width(m_adjacency.columns, m_nnz, rows,
                                     2 * static_cast<std::size_t>(replicas) * value_bytes,
-                                    l2_cache_bytes(), available_memory_bytes());
+                                    this_cpu_caches(threads), available_memory_bytes());
   if (width != m_segment_width) {
     cut(width);
     m_segment_width = width;
@@ -376,6 +380,7 @@ void NetworkForce::prepare_segments(NodeIndex rows, int replicas) {
   // Only once all of it is in place: a throw above leaves the next call to decide again.
   m_segmented_rows = rows;
   m_segmented_replicas = replicas;
+  m_segmented_threads = threads;
 }
 
 void NetworkForce::prepare(const RotorState& state, std::vector<double>& g, ForceSums& sums) {

@@ -29,8 +29,9 @@ namespace hmfnet {
 class NetworkForce : public CouplingForce {
  public:
   /// Keeps a reference to `network`, which must outlive this object. `segment_width`: columns
-  /// per segment, k_automatic_segments (automatic_segment_width against this CPU's L2 for the
-  /// replica count of prepare), k_unsegmented, or a width >= 1 (tests, benchmarks).
+  /// per segment, k_automatic_segments (automatic_segment_width against this CPU's caches for
+  /// the replica count of prepare and the team that evaluates), k_unsegmented, or a width >= 1
+  /// (tests, benchmarks).
   explicit NetworkForce(const DistributedNetwork& network,
                         ForcePrecision precision = ForcePrecision::float64,
                         NodeIndex segment_width = k_automatic_segments);
@@ -95,6 +96,7 @@ class NetworkForce : public CouplingForce {
   NodeIndex m_segment_width = -1;   // the width m_segments was cut with (-1: not yet)
   NodeIndex m_segmented_rows = -1;  // the shape prepare_segments last decided for
   int m_segmented_replicas = -1;
+  int m_segmented_threads = -1;
   ColumnSegments m_segments;
   DistributedNetwork* m_column_owner = nullptr;  // take_columns: the network to take them from
   bool m_took_columns = false;

@@ -353,7 +353,10 @@ TEST_CASE("segment runs put every row back together in CSR order; unsorted rows 
 
 TEST_CASE("automatic segment width: unblocked while the table fits in L2, half an L2 per segment",
           "[column_segments]") {
-  const std::size_t l2 = std::size_t{2} << 20;
+  // The Intel Xeon's caches: 2 MiB L2, a socket's 260 MiB L3, whose slices live in L2.
+  const CacheSizes l2{std::size_t{2} << 20, std::size_t{260} << 20};
+  CHECK_FALSE(slices_in_l3(l2));
+  CHECK_FALSE(slices_in_l3(CacheSizes{std::size_t{2} << 20, 0}));
   const std::size_t plenty = std::size_t{64} << 30;
   // ER N = 10^4, degree 100, 8 float64 replicas: 1.28 MB table, fits.
   CHECK(automatic_segment_width(10'000, 1'000'000, 10'000, 128, l2, plenty) == k_unsegmented);
@@ -381,4 +384,49 @@ TEST_CASE("automatic segment width: unblocked while the table fits in L2, half a
   CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 16, l2, 2 * extra - 1) ==
         k_unsegmented);
   CHECK(available_memory_bytes() > 0);
+}
+
+TEST_CASE("automatic segment width: slices of half a core complex's L3, where the carry pays",
+          "[column_segments]") {
+  // The AMD EPYC's caches: 512 KiB L2, 8 MiB L3.
+  const CacheSizes near{std::size_t{512} << 10, std::size_t{8} << 20};
+  REQUIRE(slices_in_l3(near));
+  const std::size_t plenty = std::size_t{64} << 30;
+  // ER N = 10^4, degree 100: tables of 0.64 MB (float64, 4 replicas) and 1.28 MB (8) beyond the
+  // L2 but within half the L3: unblocked.
+  CHECK(automatic_segment_width(10'000, 1'000'000, 10'000, 64, near, plenty) == k_unsegmented);
+  CHECK(automatic_segment_width(10'000, 1'000'000, 10'000, 128, near, plenty) == k_unsegmented);
+  // N = 10^6, float64, one replica: 16 MB in 4 slices of at most 4 MiB; the carry (4 segments x
+  // 2 x 4 x 16 B a row) well under the row's 100 lines.
+  CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 16, near, plenty) == 250'000);
+  // float32, one replica: 8 MB in 2; 4 replicas (32 B): 32 MB in 8, carry 2 KB against 6.4 KB.
+  CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 8, near, plenty) == 500'000);
+  CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 32, near, plenty) == 125'000);
+  // Records of 64 B and 128 B fill their lines: 16 segments' carry (8 KB, 16 KB a row) would move
+  // more than the 6.4 KB and 12.8 KB of lines they save: unblocked.
+  CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 64, near, plenty) ==
+        k_unsegmented);
+  CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 128, near, plenty) ==
+        k_unsegmented);
+  // An L3 no larger than twice the L2 holds no slice the L2 would not: slices in L2.
+  CHECK_FALSE(slices_in_l3(CacheSizes{std::size_t{1} << 20, std::size_t{2} << 20}));
+  // Two threads share the L3: slices of 2 MiB, 8 segments of 125,000 columns for float64 with one
+  // replica.
+  const CacheSizes shared{near.l2, near.l3, 2};
+  CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 16, shared, plenty) == 125'000);
+  CHECK(this_cpu_caches(2).l2 == l2_cache_bytes());
+  CHECK(this_cpu_caches(0).l3_threads == 1);
+  CHECK(cpu_list_count("0-1") == 2);
+  CHECK(cpu_list_count("0-7,64-71") == 16);
+  CHECK(cpu_list_count("3") == 1);
+  CHECK(cpu_list_count("5-2") == 0);
+  CHECK(cpu_list_count("0-1;4") == 0);
+  CHECK(cpu_list_count("x") == 0);
+  CHECK(cpu_list_count("") == 0);
+  CHECK(cpu_list_count("0-1,") == 0);
+  CHECK(cpu_list_count("-5") == 0);
+  CHECK(cpu_list_count("0, 1") == 0);
+  CHECK(cpu_list_count("0-2147483647") == 0);
+  // glibc's socket-wide 64 MiB, where sysfs does not answer, is not a core complex's L3.
+  CHECK_FALSE(slices_in_l3(CacheSizes{std::size_t{512} << 10, std::size_t{64} << 20}));
 }
