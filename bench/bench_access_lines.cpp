@@ -26,7 +26,6 @@
 // Counters (summed over threads, per step, bytes): l1_fill_bytes, l2_fill_bytes; beside them
 // index_bytes (indices and run lengths), segments, and the two sizes.
 #include <benchmark/benchmark.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -35,6 +34,7 @@
 #include <vector>
 
 #include "cached_network.hpp"
+#include "core/cpu_caches.hpp"
 #include "dynamics/column_segments.hpp"
 #include "dynamics/sincos.hpp"
 #include "dynamics/wide_rows.hpp"
@@ -46,11 +46,6 @@ namespace {
 constexpr std::size_t k_line = 64;
 constexpr std::size_t k_part_accesses = std::size_t{1} << 22;
 constexpr std::uint32_t k_no_line = UINT32_MAX;
-
-std::size_t l1_cache_bytes() {
-  const long bytes = sysconf(_SC_LEVEL1_DCACHE_SIZE);
-  return bytes > 0 ? static_cast<std::size_t>(bytes) : std::size_t{48} << 10;
-}
 
 // Belady's optimal replacement over one part from an empty cache of `capacity` lines: the misses.
 // `next_seen` (all k_no_line) and `cached` (all 0) are scratch indexed by line, of the table's

@@ -6,9 +6,11 @@
 # run so the ratios are comparable. Prints the integration loop's rate (work * steps per second,
 # as the CLI reports it: stored entries x replicas for ER, rows x replicas for K_N; G/s), the
 # rule's work per step (gathers + k_row_work per row, x replicas), the threads the default chose,
-# and default / best.
-# Run on an idle machine (all rows: ~25 min). Usage: bench/thread_rule.sh [BUILD_DIR (default
-# build)] [NETWORKS: all (default), er or complete: only the ER or only the complete-graph rows]
+# and default / best; then one thread's step time (us), what a second thread adds to a step beyond
+# half of it (us) and one thread's time per unit of the rule's work (ns).
+# Run on an idle machine (all rows: 10 min on the AMD EPYC, 25 on the Intel Xeon). Usage:
+# bench/thread_rule.sh [BUILD_DIR (default build)] [NETWORKS: all (default), er or complete: only
+# the ER or only the complete-graph rows]
 set -euo pipefail
 build=${1:-build}
 networks=${2:-all}
@@ -23,7 +25,7 @@ hmfnet="$build/bin/hmfnet"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-rate() {  # policy, network, T, extra args... -> "rate threads work"
+rate() {  # policy, network, T, extra args... -> "rate threads work step_seconds"
   local policy=$1 net=$2 T=$3
   shift 3
   local env=(env -u OMP_WAIT_POLICY -u OMP_NUM_THREADS)
@@ -37,24 +39,28 @@ rate() {  # policy, network, T, extra args... -> "rate threads work"
     cat "$tmp/stderr" >&2
     exit 1
   fi
-  python3 -c "import json,sys; d=json.load(sys.stdin); print(d['nnz_steps_per_second']/1e9, d['threads'], d.get('thread_rule_work', 0))" <<<"$out"
+  python3 -c "import json,sys; d=json.load(sys.stdin); print(d['nnz_steps_per_second']/1e9, d['threads'], d.get('thread_rule_work', 0), d['integration_seconds'] / d['steps'])" <<<"$out"
 }
 
 row() {  # label, network, T, extra args...
   local label=$1 net=$2 T=$3
   shift 3
   for policy in unset ACTIVE PASSIVE; do
-    read -r one _ _ < <(rate "$policy" "$net" "$T" --threads 1 "$@")
-    read -r two _ _ < <(rate "$policy" "$net" "$T" --threads 2 "$@")
-    read -r def chosen work < <(rate "$policy" "$net" "$T" "$@")
+    read -r one _ _ t1 < <(rate "$policy" "$net" "$T" --threads 1 "$@")
+    read -r two _ _ t2 < <(rate "$policy" "$net" "$T" --threads 2 "$@")
+    read -r def chosen work _ < <(rate "$policy" "$net" "$T" "$@")
+    # What the second thread adds to a step beyond half the work (its barriers and wakes),
+    # t2 - t1 / 2, and one thread's time per unit of the rule's work, t1 / work: the rule's
+    # threshold in units is the first over the second (docs/performance.md, "The thread rule
+    # on the AMD EPYC").
     python3 -c "
-one, two, d = $one, $two, $def
-print('%-24s %-8s %10d %9.3f %9.3f %9.3f %8d %13.2f' % ('$label', '$policy', $work, one, two, d, $chosen, d / max(one, two)))"
+one, two, d, t1, t2 = $one, $two, $def, $t1, $t2
+print('%-24s %-8s %10d %9.3f %9.3f %9.3f %8d %13.2f %9.1f %7.1f %8.2f' % ('$label', '$policy', $work, one, two, d, $chosen, d / max(one, two), t1 * 1e6, (t2 - t1 / 2) * 1e6, t1 * 1e9 / max($work, 1)))"
   done
 }
 
-printf "%-24s %-8s %10s %9s %9s %9s %8s %13s\n" network policy "rule work" "1 thread" \
-  "2 threads" default "chosen" "default/best"
+printf "%-24s %-8s %10s %9s %9s %9s %8s %13s %9s %7s %8s\n" network policy "rule work" "1 thread" \
+  "2 threads" default "chosen" "default/best" "step us" "+2nd us" "ns/unit"
 # N, mean degree, T: about 2e9 stored entries x steps per run (less for the two smallest,
 # whose rate is set by the per-step costs, not the entries).
 er_specs=("100 5 4000" "300 10 4000" "1000 10 2000" "1000 100 200" "10000 10 200"
@@ -81,3 +87,25 @@ for spec in ${complete_specs[@]+"${complete_specs[@]}"}; do
     { cat "$tmp/stderr" >&2; exit 1; }
   row "K_N N=$n B=$b" "$net" "$T" --replicas "$b"
 done
+
+# The cost of one barrier of a two-thread team under each policy (hmfnet_bench's TeamBarrier, the
+# median of its repetitions): the part of "+2nd us" that no work hides.
+bench="$build/bin/hmfnet_bench"
+if [[ -x $bench ]]; then
+  line="a two-thread barrier (TeamBarrier, median of 3):"
+  for policy in unset ACTIVE PASSIVE; do
+    env=(env -u OMP_WAIT_POLICY -u OMP_NUM_THREADS)
+    [[ $policy != unset ]] && env+=(OMP_WAIT_POLICY="$policy")
+    # A build older than TeamBarrier prints "?" (and the bench's messages) rather than ending
+    # the script after its table.
+    if ! us=$("${env[@]}" "$bench" --benchmark_filter='^TeamBarrier/' --benchmark_format=json \
+      2>"$tmp/bench_stderr" | python3 -c "import json,sys; b=[x for x in json.load(sys.stdin)['benchmarks'] if x.get('aggregate_name') == 'median']; print('%.2f' % (b[0]['seconds_per_barrier'] * 1e6))"); then
+      cat "$tmp/bench_stderr" >&2
+      us="?"
+    fi
+    line+=" $policy $us us,"
+  done
+  echo "${line%,}"
+else
+  echo "(no $bench: the barrier costs need a build with -DHMFNET_BUILD_BENCH=ON)"
+fi

@@ -17,42 +17,6 @@ namespace hmfnet {
 
 namespace {
 
-// "2048K" or "2M" (sysfs cache size) in bytes; 0 when unreadable.
-std::size_t parse_cache_size(const std::string& text) {
-  std::size_t used = 0;
-  unsigned long long value = 0;
-  try {
-    value = std::stoull(text, &used);
-  } catch (...) {
-    return 0;
-  }
-  const char unit = used < text.size() ? text[used] : ' ';
-  if (unit == 'K') value <<= 10;
-  if (unit == 'M') value <<= 20;
-  return static_cast<std::size_t>(value);
-}
-
-// The size of cpu0's unified or data cache of `level` in sysfs; 0 when unreadable.
-std::size_t sysfs_cache_bytes(int level) {
-  for (int index = 0; index < 8; ++index) {
-    const std::string dir = "/sys/devices/system/cpu/cpu0/cache/index" + std::to_string(index);
-    std::ifstream level_file(dir + "/level"), size_file(dir + "/size");
-    int found = 0;
-    std::string size;
-    if (!(level_file >> found) || !(size_file >> size)) continue;
-    if (found == level) return parse_cache_size(size);
-  }
-  return 0;
-}
-
-std::size_t read_l2_bytes() {
-  // glibc answers from CPUID; it returns 0 or -1 where it cannot tell (some VMs, other libcs).
-  const long from_sysconf = sysconf(_SC_LEVEL2_CACHE_SIZE);
-  if (from_sysconf > 0) return static_cast<std::size_t>(from_sysconf);
-  const std::size_t from_sysfs = sysfs_cache_bytes(2);
-  return from_sysfs > 0 ? from_sysfs : k_default_l2_bytes;
-}
-
 // The segments' carried partial sums against the lines they save, per row and step, where both
 // come from memory: each of `segments` reads and writes a row's four partials of the record,
 // and unsegmented each of the row's `degree` entries takes its record's whole lines.
@@ -102,69 +66,7 @@ void prefer_huge_pages(void* data, std::size_t bytes) {
   madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
 }
 
-// The CPUs that share cpu0's L3 ("0-7,64-71" in sysfs: 16); 0 when unreadable.
-int sysfs_l3_sharing_cpus() {
-  for (int index = 0; index < 8; ++index) {
-    const std::string dir = "/sys/devices/system/cpu/cpu0/cache/index" + std::to_string(index);
-    std::ifstream level_file(dir + "/level"), list_file(dir + "/shared_cpu_list");
-    int level = 0;
-    std::string list;
-    if (!(level_file >> level) || level != 3 || !(list_file >> list)) continue;
-    return cpu_list_count(list);
-  }
-  return 0;
-}
-
 }  // namespace
-
-int cpu_list_count(const std::string& list) {
-  // One CPU number at `at`: digits only (std::stoul would take signs and spaces), 0 to 2^20.
-  const auto number = [&list](std::size_t& at, std::int64_t& value) {
-    const std::size_t begin = at;
-    value = 0;
-    while (at < list.size() && list[at] >= '0' && list[at] <= '9' && at - begin < 7) {
-      value = value * 10 + (list[at++] - '0');
-    }
-    return at > begin && value <= (std::int64_t{1} << 20);
-  };
-  std::int64_t count = 0;
-  std::size_t at = 0;
-  while (true) {
-    std::int64_t first = 0, last = 0;
-    if (!number(at, first)) return 0;
-    last = first;
-    if (at < list.size() && list[at] == '-' && !number(++at, last)) return 0;
-    if (last < first) return 0;
-    count += last - first + 1;
-    if (at == list.size()) break;
-    if (list[at++] != ',') return 0;
-  }
-  return static_cast<int>(std::min<std::int64_t>(count, std::int64_t{1} << 20));
-}
-
-std::size_t l2_cache_bytes() {
-  static const std::size_t bytes = read_l2_bytes();
-  return bytes;
-}
-
-std::size_t l3_cache_bytes() {
-  // sysfs first: it gives the L3 this core shares (the AMD EPYC's 8 MiB core complex), where
-  // glibc's CPUID answer there is the socket's 64 MiB, no cache a core can hold a slice in.
-  static const std::size_t bytes = [] {
-    const std::size_t from_sysfs = sysfs_cache_bytes(3);
-    if (from_sysfs > 0) return from_sysfs;
-    const long from_sysconf = sysconf(_SC_LEVEL3_CACHE_SIZE);
-    return from_sysconf > 0 ? static_cast<std::size_t>(from_sysconf) : std::size_t{0};
-  }();
-  return bytes;
-}
-
-CacheSizes this_cpu_caches(int threads) {
-  // Threads beyond the CPUs one L3 serves run on other L3s (other core complexes).
-  static const int sharing = sysfs_l3_sharing_cpus();
-  const int share = sharing > 0 ? std::min(threads, sharing) : threads;
-  return CacheSizes{l2_cache_bytes(), l3_cache_bytes(), std::max(share, 1)};
-}
 
 bool slices_in_l3(CacheSizes caches) {
   return caches.l3 > 2 * caches.l2 && caches.l3 < k_near_l3_max_bytes;

@@ -11,42 +11,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
-#include <string>
 #include <vector>
 
+#include "core/cpu_caches.hpp"
 #include "dynamics/run_lengths.hpp"
 #include "network/network.hpp"
 
 namespace hmfnet {
-
-/// The L2 cache of the CPU this process runs on, in bytes: sysconf(_SC_LEVEL2_CACHE_SIZE), else
-/// the level-2 entry of /sys/devices/system/cpu/cpu0/cache, else k_default_l2_bytes. Read once.
-std::size_t l2_cache_bytes();
-
-/// Used where neither source answers: the smallest per-core L2 of the machines measured so far
-/// (AMD EPYC: 512 KiB; Intel Xeon: 2 MiB), so a slice sized by it fits on both.
-inline constexpr std::size_t k_default_l2_bytes = std::size_t{512} << 10;
-
-/// The L3 cache that cpu0 shares, in bytes: the level-3 entry of
-/// /sys/devices/system/cpu/cpu0/cache, else sysconf(_SC_LEVEL3_CACHE_SIZE), else 0. Read once.
-std::size_t l3_cache_bytes();
-
-/// The caches a segment's slice of the table can live in, in bytes (l3 0: none known), and the
-/// threads that share the L3: each walks its rows through the segments without waiting for the
-/// others, so each may hold a slice of its own there.
-struct CacheSizes {
-  std::size_t l2 = k_default_l2_bytes;
-  std::size_t l3 = 0;
-  int l3_threads = 1;
-};
-
-/// The CPUs of a sysfs CPU list ("0-7,64-71": 16, at most 2^20); 0 where it does not parse.
-int cpu_list_count(const std::string& list);
-
-/// This CPU's (l2_cache_bytes(), l3_cache_bytes()) for a team of `threads`: at least one, at
-/// most the CPUs that share cpu0's L3 (sysfs shared_cpu_list), as threads beyond those run on
-/// other L3s.
-CacheSizes this_cpu_caches(int threads);
 
 /// An L3 smaller than this is taken as a core complex's own, close enough to hold the
 /// segments' slices: the AMD EPYC's 8 MiB (512 KiB L2), where ER N = 10^6, degree 100, float64,

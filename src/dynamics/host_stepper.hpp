@@ -27,6 +27,7 @@ class HostStepper : public EnsembleStepper {
   CouplingForce& m_force;
   ForceEvaluation m_f;  // the force at m_state's phases
   RotorState m_state;
+  std::vector<double> m_kinetic_terms, m_abs_p;  // a record's p^2 / 2 and |p|, reused
 };
 
 }  // namespace hmfnet

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <string>
 
+#include "core/cpu_caches.hpp"
 #include "core/error.hpp"
 #include "dynamics/ordered_sum.hpp"
 #include "dynamics/row_kernel_args.hpp"

@@ -32,6 +32,11 @@ WaitPolicy wait_policy_from_environment();
 ///    entries), 1.6-2.0x from 4 10^6 on (ER N = 10^5, d = 20 and 100): a second thread from
 ///    1.16 10^6 on, which keeps ER N = 10^4, d = 100 on two (at 600,000 a thread it fell just
 ///    below, to one: 0.79x of the AMD's best) and K_N with one replica on one below N = 77,334.
+///  Not a bound of every machine: on an AMD EPYC family 23 model 1 (2.0 GHz, KVM) a second
+///  PASSIVE thread costs a step ~30 us where the Intel Xeon's costs ~250, a unit of work takes
+///  ~0.9 ns where the Intel Xeon's takes ~0.3, and two threads ran 1.4-1.8x one at 1.5 .. 4 10^5:
+///  these constants fail 7 of its 30 rows (0.57-0.82; docs/performance.md, "The thread rule on
+///  the AMD EPYC"). A rule for both needs those two costs of the machine it runs on.
 inline constexpr std::int64_t k_work_per_thread_spinning = 50'000;
 inline constexpr std::int64_t k_work_per_thread_passive = 580'000;
 
