@@ -6,9 +6,11 @@
 # run so the ratios are comparable. Prints the integration loop's rate (work * steps per second,
 # as the CLI reports it: stored entries x replicas for ER, rows x replicas for K_N; G/s), the
 # rule's work per step (gathers + k_row_work per row, x replicas), the threads the default chose,
-# and default / best; then one thread's step time (us), what a second thread adds to a step beyond
-# half of it (us) and one thread's time per unit of the rule's work (ns).
-# Run on an idle machine (all rows: 10 min on the AMD EPYC, 25 on the Intel Xeon). Usage:
+# whether it chose them by timing its first steps (src/dynamics/thread_trial.hpp; short runs and
+# runs over several ranks keep the rule's count) and default / best; then one thread's step time
+# (us), what a second thread adds to a step beyond half of it (us) and one thread's time per unit
+# of the rule's work (ns).
+# Run on an idle machine (all rows: ~15 min on the AMD EPYC, 25 on the Intel Xeon). Usage:
 # bench/thread_rule.sh [BUILD_DIR (default build)] [NETWORKS: all (default), er or complete: only
 # the ER or only the complete-graph rows]
 set -euo pipefail
@@ -25,7 +27,7 @@ hmfnet="$build/bin/hmfnet"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-rate() {  # policy, network, T, extra args... -> "rate threads work step_seconds"
+rate() {  # policy, network, T, extra args... -> "rate threads work step_seconds tried"
   local policy=$1 net=$2 T=$3
   shift 3
   local env=(env -u OMP_WAIT_POLICY -u OMP_NUM_THREADS)
@@ -39,28 +41,28 @@ rate() {  # policy, network, T, extra args... -> "rate threads work step_seconds
     cat "$tmp/stderr" >&2
     exit 1
   fi
-  python3 -c "import json,sys; d=json.load(sys.stdin); print(d['nnz_steps_per_second']/1e9, d['threads'], d.get('thread_rule_work', 0), d['integration_seconds'] / d['steps'])" <<<"$out"
+  python3 -c "import json,sys; d=json.load(sys.stdin); print(d['nnz_steps_per_second']/1e9, d['threads'], d.get('thread_rule_work', 0), d['integration_seconds'] / d['steps'], 'yes' if '->' in d.get('thread_trial', '') else 'no')" <<<"$out"
 }
 
 row() {  # label, network, T, extra args...
   local label=$1 net=$2 T=$3
   shift 3
   for policy in unset ACTIVE PASSIVE; do
-    read -r one _ _ t1 < <(rate "$policy" "$net" "$T" --threads 1 "$@")
-    read -r two _ _ t2 < <(rate "$policy" "$net" "$T" --threads 2 "$@")
-    read -r def chosen work _ < <(rate "$policy" "$net" "$T" "$@")
+    read -r one _ _ t1 _ < <(rate "$policy" "$net" "$T" --threads 1 "$@")
+    read -r two _ _ t2 _ < <(rate "$policy" "$net" "$T" --threads 2 "$@")
+    read -r def chosen work _ tried < <(rate "$policy" "$net" "$T" "$@")
     # What the second thread adds to a step beyond half the work (its barriers and wakes),
     # t2 - t1 / 2, and one thread's time per unit of the rule's work, t1 / work: the rule's
     # threshold in units is the first over the second (docs/performance.md, "The thread rule
     # on the AMD EPYC").
     python3 -c "
 one, two, d, t1, t2 = $one, $two, $def, $t1, $t2
-print('%-24s %-8s %10d %9.3f %9.3f %9.3f %8d %13.2f %9.1f %7.1f %8.2f' % ('$label', '$policy', $work, one, two, d, $chosen, d / max(one, two), t1 * 1e6, (t2 - t1 / 2) * 1e6, t1 * 1e9 / max($work, 1)))"
+print('%-24s %-8s %10d %9.3f %9.3f %9.3f %8d %5s %13.2f %9.1f %7.1f %8.2f' % ('$label', '$policy', $work, one, two, d, $chosen, '$tried', d / max(one, two), t1 * 1e6, (t2 - t1 / 2) * 1e6, t1 * 1e9 / max($work, 1)))"
   done
 }
 
-printf "%-24s %-8s %10s %9s %9s %9s %8s %13s %9s %7s %8s\n" network policy "rule work" "1 thread" \
-  "2 threads" default "chosen" "default/best" "step us" "+2nd us" "ns/unit"
+printf "%-24s %-8s %10s %9s %9s %9s %8s %5s %13s %9s %7s %8s\n" network policy "rule work" \
+  "1 thread" "2 threads" default "chosen" "trial" "default/best" "step us" "+2nd us" "ns/unit"
 # N, mean degree, T: about 2e9 stored entries x steps per run (less for the two smallest,
 # whose rate is set by the per-step costs, not the entries).
 er_specs=("100 5 4000" "300 10 4000" "1000 10 2000" "1000 100 200" "10000 10 200"

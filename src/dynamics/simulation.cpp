@@ -3,6 +3,7 @@
 #include <omp.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -21,6 +22,7 @@
 #include "dynamics/series_recorder.hpp"
 #include "dynamics/stepper_choice.hpp"
 #include "dynamics/thread_choice.hpp"
+#include "dynamics/thread_trial.hpp"
 #include "dynamics/time_average.hpp"
 #include "parallel/network_content_hash.hpp"
 #include "parallel/parallel_session.hpp"
@@ -32,6 +34,14 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 std::int64_t steps_for(double time, double h) { return std::llround(time / h); }
+
+/// Steps of the whole schedule, every segment.
+double total_steps(const SimulationParameters& p) {
+  double total = 0.0;
+  for (std::size_t k = 0; k < p.K.size(); ++k)
+    total += static_cast<double>(steps_for(p.duration, step_at(p, k).h));
+  return total;
+}
 
 /// Where the recorded time is measured from at segment k: the time and step count at the start
 /// of the last segment whose step differs from its predecessor's. With one step throughout it
@@ -80,7 +90,7 @@ class Run {
   /// replica at the schedule's K. `identity`: the parameters the checkpoint's fingerprint names.
   Run(const DistributedNetwork& network, const std::vector<double>& degrees, CouplingForce& force,
       std::unique_ptr<EnsembleStepper> stepper, const SimulationParameters& params,
-      std::vector<double> lane_K, const SimulationParameters& identity)
+      std::vector<double> lane_K, const SimulationParameters& identity, ThreadTrial trial)
       : m_network(network),
         m_force(force),
         m_stepper(std::move(stepper)),
@@ -99,7 +109,8 @@ class Run {
         m_checkpoints(
             params.checkpoint_path.empty() ? std::function<void()>{}
                                            : [this] { write_checkpoint_now(); },
-            params.checkpoint_seconds) {}
+            params.checkpoint_seconds),
+        m_trial(std::move(trial)) {}
 
   SimulationResult execute();
 
@@ -127,12 +138,6 @@ class Run {
   void restore(const Checkpoint& c);
   std::int64_t rotor_samples() const;
   double max_node_order() const;
-  static double total_steps(const SimulationParameters& p) {
-    double total = 0.0;
-    for (std::size_t k = 0; k < p.K.size(); ++k)
-      total += static_cast<double>(steps_for(p.duration, step_at(p, k).h));
-    return total;
-  }
   /// Collective the first time (the network's content hash): called by every rank alike.
   std::string run_fingerprint() {
     if (m_fingerprint.empty()) {
@@ -169,6 +174,7 @@ class Run {
   int m_k_start = 0;
   double m_seconds_before = 0.0;  // integration seconds of earlier sessions (resume)
   Clock::time_point m_loop_start{};
+  ThreadTrial m_trial;  ///< the first steps' thread counts (thread_trial.hpp), or none
 };
 
 std::vector<double> Run::order_parameter(std::vector<double> order_sums) const {
@@ -342,6 +348,7 @@ void Run::finish(bool interrupted) {
       ParallelSession::sum(static_cast<double>(m_force.work_per_evaluation())));
   m_result.force_name = m_force.name();
   m_result.device = m_stepper->device();
+  m_result.thread_trial = m_trial.summary();
 }
 
 void Run::restore(const Checkpoint& c) {
@@ -464,10 +471,17 @@ SimulationResult Run::execute() {
           return m_result;
         }
       }
-      const std::int64_t n = chunk_end(left) - m_seg.step;
+      const std::int64_t n =
+          std::min(chunk_end(left) - m_seg.step, m_trial.chunk_limit());  // no limit: no trial
       const bool sampled = m_seg.step >= transient;  // every step of the chunk, or none
       order.clear();
+      if (m_trial.active()) omp_set_num_threads(m_trial.threads());
+      const Clock::time_point chunk_start = Clock::now();
       m_stepper->advance(*m_integrator, m_h, K, n, sampled ? &order : nullptr);
+      if (m_trial.active()) {
+        m_trial.add(n, std::chrono::duration<double>(Clock::now() - chunk_start).count(), sampled);
+        if (!m_trial.active()) omp_set_num_threads(m_trial.chosen());
+      }
       session_steps += n;
       m_result.steps += n;
       for (std::int64_t i = 0; i < n; ++i) {
@@ -490,6 +504,34 @@ SimulationResult Run::execute() {
   return m_result;
 }
 
+/// The trial of the default thread count (thread_trial.hpp) for a run the rule gave `by_rule`
+/// threads: the rule's count, 1 and the `available` threads OpenMP offers, each timed over
+/// samples of k_trial_sample_work units of the rule's work. None where one thread is offered,
+/// where the run has several ranks (each would time the others' waits in the collectives, and a
+/// rank's chunks must not depend on its clock), on a GPU, or where the trial's steps would
+/// exceed 1 / k_trial_share of the run: were a count 8x slower (two PASSIVE threads ran 7x slower
+/// on the Intel Xeon at K_N N = 10^4), its half of the trial's 2.5% of the steps would cost the
+/// run 7 x 1.25% ~ 9% (docs/performance.md "The thread rule measured at run time").
+ThreadTrial thread_trial(const SimulationParameters& params, int by_rule, int available,
+                         std::int64_t work) {
+  constexpr std::int64_t k_trial_sample_work = 4'000'000;  // 1-6 ms at 0.25-1.5 ns a unit
+  constexpr int k_trial_samples = 3;
+  constexpr double k_trial_share = 40.0;
+  if (available < 2 || ParallelSession::ranks() > 1 || params.device != "cpu") return {};
+  std::vector<int> candidates{by_rule};
+  for (const int c : {1, available}) {
+    if (std::find(candidates.begin(), candidates.end(), c) == candidates.end())
+      candidates.push_back(c);
+  }
+  const std::int64_t sample_steps =
+      std::max<std::int64_t>(1, (k_trial_sample_work + work - 1) / std::max<std::int64_t>(work, 1));
+  const double trial_steps = static_cast<double>(candidates.size()) *
+                             static_cast<double>(k_trial_samples + 1) *
+                             static_cast<double>(sample_steps);
+  if (trial_steps * k_trial_share > total_steps(params)) return {};
+  return ThreadTrial(std::move(candidates), sample_steps, k_trial_samples);
+}
+
 }  // namespace
 
 SimulationResult simulate(const DistributedNetwork& network, const std::vector<double>& degrees,
@@ -504,16 +546,21 @@ SimulationResult simulate(const DistributedNetwork& network, const std::vector<d
       static_cast<double>(force.gathers_per_evaluation()) * force.lane_gather_cost(pass_lanes)));
   const std::int64_t work = step_work(gathers, static_cast<std::int64_t>(network.local_size()),
                                       static_cast<std::int64_t>(pass_lanes), force.row_work());
-  const ThreadCountScope threads(params.threads > 0 ? params.threads
-                                                    : default_threads(work, omp_get_max_threads()));
+  const int available = omp_get_max_threads();
+  const int by_rule = params.threads > 0 ? params.threads : default_threads(work, available);
+  const auto trial = [&](const SimulationParameters& run) {
+    return params.threads > 0 ? ThreadTrial() : thread_trial(run, by_rule, available, work);
+  };
+  const ThreadCountScope threads(by_rule);
   SimulationResult result;
   if (params.K_across_replicas) {
     const SimulationParameters one_pass = lane_parameters(params);
     Run run(network, degrees, force, make_stepper(network, force, one_pass), one_pass,
-            lane_couplings(params), params);
+            lane_couplings(params), params, trial(one_pass));
     result = split_lanes(run.execute(), params);
   } else {
-    Run run(network, degrees, force, make_stepper(network, force, params), params, {}, params);
+    Run run(network, degrees, force, make_stepper(network, force, params), params, {}, params,
+            trial(params));
     result = run.execute();
   }
   result.threads = omp_get_max_threads();

@@ -320,7 +320,7 @@ TEST_CASE("segmented leap-frog trajectories equal unblocked ones bit for bit [ER
   }
 }
 
-TEST_CASE("segment runs put every row back together in CSR order; unsorted rows stay whole",
+TEST_CASE("segment runs put every row back together in CSR order, and unsorted rows stay whole",
           "[column_segments]") {
   // Rows {0, 2, 5, 9}, {}, {1, 3, 4, 8, 9}, {7}; 10 columns in segments of 3.
   const std::vector<EdgeOffset> row_ptr{0, 4, 4, 9, 10};

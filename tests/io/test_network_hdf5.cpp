@@ -591,7 +591,7 @@ TEST_CASE("HDF5 row blocks refuse a corrupted entry in the second block only, na
   require_input_error(e, path, 0, "/network: column index 400 in row 399 out of range [0,400)");
 }
 
-TEST_CASE("HDF5 row blocks refuse a part outside [0, parts)", "[io][hdf5][row_block]") {
+TEST_CASE("HDF5 row blocks refuse a part outside 0 .. parts - 1", "[io][hdf5][row_block]") {
   TempDirectory dir;
   const std::string path = valid_file(dir);
   CHECK_THROWS_AS(read_network_hdf5_rows(path, 2, 2), ParameterError);

@@ -32,7 +32,7 @@ constexpr double k_same_solution_rel = 1e-12;
 
 }  // namespace
 
-TEST_CASE("Complete graph closed forms equal the stored graph [N = 2, 3, 7, 300; loops or not]",
+TEST_CASE("Complete graph closed forms equal the stored graph [N = 2, 3, 7, 300, loops or not]",
           "[network][complete]") {
   for (const NodeIndex n : {2, 3, 7, 300}) {
     for (const bool loops : {false, true}) {

@@ -105,7 +105,7 @@ TEST_CASE("An entry without its transpose across blocks is refused on every rank
                           Contains("row 0 and column 0 differ"));
 }
 
-TEST_CASE("agree: a failure on one rank reaches every rank; no failure, no error",
+TEST_CASE("agree: a failure on one rank reaches every rank, and no failure gives no error",
           "[distributed][read]") {
   CHECK_NOTHROW(ParallelSession::agree([] {}));
   const int last = ParallelSession::ranks() - 1;

@@ -108,7 +108,7 @@ TEST_CASE("order_by_part: parts contiguous, each in its old order, a permutation
   }
 }
 
-TEST_CASE("Zoltan2 finds the blocks of a shuffled two-block SBM; ER stays cut",
+TEST_CASE("Zoltan2 finds the blocks of a shuffled two-block SBM, and ER stays cut",
           "[distributed][renumbering][partition]") {
   // SBM: 2 x 600 nodes, degree ~30 inside and ~1.2 across; labels shuffled, so that the two row
   // halves of the file as given cut about half of all entries.

@@ -7,7 +7,8 @@
 
 using namespace hmfnet;
 
-TEST_CASE("Momentum distributions are named both ways; an unknown name is refused", "[theory]") {
+TEST_CASE("Momentum distributions are named both ways, and an unknown name is refused",
+          "[theory]") {
   for (const auto g : {MomentumDistribution::gaussian, MomentumDistribution::waterbag})
     REQUIRE(parse_momentum_distribution(name_of(g)) == g);
   REQUIRE_THROWS_WITH(parse_momentum_distribution("lorentz", "--momenta"),

@@ -1,0 +1,101 @@
+#include "dynamics/thread_trial.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <stdexcept>
+
+namespace hmfnet {
+
+ThreadTrial::ThreadTrial(std::vector<int> candidates, std::int64_t sample_steps, int samples)
+    : m_candidates(std::move(candidates)), m_sample_steps(sample_steps), m_samples(samples) {
+  if (m_candidates.empty() || sample_steps < 1 || samples < 1) {
+    throw std::invalid_argument("ThreadTrial: candidates, sample steps and samples must be given");
+  }
+  for (std::size_t i = 0; i < m_candidates.size(); ++i) {
+    if (m_candidates[i] < 1 ||
+        std::find(m_candidates.begin(), m_candidates.begin() + static_cast<std::ptrdiff_t>(i),
+                  m_candidates[i]) != m_candidates.begin() + static_cast<std::ptrdiff_t>(i)) {
+      throw std::invalid_argument("ThreadTrial: candidates must be distinct counts >= 1");
+    }
+  }
+  m_chosen = m_candidates.front();
+  m_active = m_candidates.size() > 1;
+  restart();
+}
+
+int ThreadTrial::threads() const { return m_active ? m_candidates[m_candidate] : m_chosen; }
+
+std::int64_t ThreadTrial::chunk_limit() const {
+  if (!m_active) return std::numeric_limits<std::int64_t>::max();
+  return m_sample_steps - m_steps_in_sample;
+}
+
+void ThreadTrial::restart() {
+  m_candidate = 0;
+  m_sample = 0;
+  m_steps_in_sample = 0;
+  m_seconds_in_sample = 0.0;
+  m_kind_known = false;
+  m_best.assign(m_candidates.size(), std::numeric_limits<double>::infinity());
+}
+
+void ThreadTrial::add(std::int64_t steps, double seconds, bool sampled) {
+  if (!m_active) return;
+  if (steps < 1 || steps > chunk_limit()) {
+    throw std::invalid_argument("ThreadTrial: a chunk must take 1 to chunk_limit() steps");
+  }
+  if (m_kind_known && sampled != m_sampled) {
+    // The samples so far timed the other kind of step: start again on this kind, whose chunk
+    // then counts as the first of the new trial's untimed sample.
+    if (m_restarts == k_trial_restarts) {
+      m_gave_up =
+          "the kind of step changed more than " + std::to_string(k_trial_restarts) + " times";
+      m_active = false;
+      return;
+    }
+    ++m_restarts;
+    restart();
+  }
+  m_sampled = sampled;
+  m_kind_known = true;
+  m_steps_in_sample += steps;
+  m_seconds_in_sample += seconds;
+  if (m_steps_in_sample < m_sample_steps) return;
+  if (m_sample > 0) {
+    double& best = m_best[m_candidate];
+    best = std::min(best, m_seconds_in_sample / static_cast<double>(m_sample_steps));
+  }
+  m_steps_in_sample = 0;
+  m_seconds_in_sample = 0.0;
+  if (++m_sample <= m_samples) return;
+  m_sample = 0;
+  if (++m_candidate == m_candidates.size()) finish();
+}
+
+void ThreadTrial::finish() {
+  m_active = false;
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < m_candidates.size(); ++i) {
+    if (m_best[i] < m_best[best]) best = i;
+  }
+  // The rule's count stays unless another is faster by more than the margin.
+  if (best != 0 && m_best[best] < (1.0 - k_trial_margin) * m_best[0]) m_chosen = m_candidates[best];
+}
+
+std::string ThreadTrial::summary() const {
+  if (m_candidates.size() < 2) return "";
+  if (!m_gave_up.empty()) return "no choice: " + m_gave_up;
+  if (m_active || m_best.back() == std::numeric_limits<double>::infinity()) {
+    return "no choice: the run ended during the trial";
+  }
+  std::string s;
+  char buffer[64];
+  for (std::size_t i = 0; i < m_candidates.size(); ++i) {
+    std::snprintf(buffer, sizeof buffer, "%s%d: %.4g us", i > 0 ? ", " : "", m_candidates[i],
+                  m_best[i] * 1e6);
+    s += buffer;
+  }
+  return s + " -> " + std::to_string(m_chosen);
+}
+
+}  // namespace hmfnet

@@ -1,0 +1,73 @@
+#pragma once
+// The default thread count chosen by timing the run's own first steps at each candidate count.
+// The rule in work units (thread_choice.hpp) stands for two costs of the machine: what a second
+// thread adds to a step (its barriers and wake-ups) and the time a unit of work takes. Measured
+// on two machines they differ by ~8x and ~3x (docs/performance.md, "The thread rule on the AMD
+// EPYC"), so no constant serves both. Results are bit-identical for any thread count, so a run can
+// take its first steps at each count, time them, and go on at the fastest: the steps are the
+// run's own, none is repeated and no result changes.
+//
+// The protocol (a pure function of the steps it is told of, so it is tested with given times): for
+// each candidate in order, one sample of `sample_steps` untimed (the team starts, a force decides
+// its blocking again: NetworkForce::prepare_segments), then `samples` timed samples; the count
+// whose fastest sample (per step) is fastest is kept, the first candidate (the rule's) unless
+// another is faster by more than k_trial_margin. A sample is made of whole chunks (the caller
+// limits each chunk to chunk_limit()) of one kind: a chunk of the other kind (sampled steps, which
+// form the order sums, after unsampled ones) starts the trial again, at most k_trial_restarts
+// times; after that, or if the run ends first, the first candidate stays.
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace hmfnet {
+
+/// A candidate must beat the first candidate's fastest sample by this fraction to be chosen: a
+/// VM's run-to-run spread of a few per cent must not move a run off the rule's count for nothing.
+inline constexpr double k_trial_margin = 0.03;
+/// How often a change of the chunks' kind may start the trial again before it gives up.
+inline constexpr int k_trial_restarts = 2;
+
+class ThreadTrial {
+ public:
+  /// No trial: active() is false and the count stays what the caller set.
+  ThreadTrial() = default;
+  /// `candidates`: distinct counts >= 1, the rule's first; `sample_steps` >= 1; `samples` >= 1.
+  ThreadTrial(std::vector<int> candidates, std::int64_t sample_steps, int samples);
+
+  bool active() const { return m_active; }
+  /// The count the next chunk runs at (while active).
+  int threads() const;
+  /// Steps the next chunk may take so that it ends with the current sample (no limit when
+  /// inactive).
+  std::int64_t chunk_limit() const;
+  /// A chunk of `steps` (<= chunk_limit()) that took `seconds` at threads(); `sampled`: its kind.
+  void add(std::int64_t steps, double seconds, bool sampled);
+  /// The count chosen once the trial ended; the first candidate before that or if it gave up.
+  int chosen() const { return m_chosen; }
+  /// Each candidate's fastest sample in microseconds a step, and the choice: "1: 81.2 us, 2:
+  /// 47.9 us -> 2", or why there was no choice; empty where no trial was made.
+  std::string summary() const;
+
+ private:
+  void restart();
+  void finish();
+
+  std::vector<int> m_candidates;
+  std::int64_t m_sample_steps = 0;
+  int m_samples = 0;
+  bool m_active = false;
+  int m_chosen = 0;
+  int m_restarts = 0;
+  bool m_sampled = false;  ///< the kind of the trial's chunks, fixed by its first chunk
+  bool m_kind_known = false;
+  std::size_t m_candidate = 0;  ///< index of the count being timed
+  int m_sample = 0;             ///< 0: the untimed sample, 1..samples: timed ones
+  std::int64_t m_steps_in_sample = 0;
+  double m_seconds_in_sample = 0.0;
+  /// Each candidate's fastest sample, seconds a step.
+  std::vector<double> m_best;
+  std::string m_gave_up;  ///< why the trial ended without a choice
+};
+
+}  // namespace hmfnet

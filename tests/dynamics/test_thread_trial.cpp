@@ -1,0 +1,195 @@
+// The trial of the default thread count (thread_trial.hpp): its protocol with given times, never
+// with measured ones, and a run that switches counts during it giving the bits of one thread.
+#include <omp.h>
+
+#include <catch2/catch.hpp>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "dynamics/network_force.hpp"
+#include "dynamics/rank_one_force.hpp"
+#include "dynamics/simulation.hpp"
+#include "dynamics/thread_choice.hpp"
+#include "dynamics/thread_trial.hpp"
+#include "network/complete_graph.hpp"
+#include "network/erdos_renyi.hpp"
+#include "parallel/distributed_network.hpp"
+#include "parallel/parallel_session.hpp"
+#include "support/simulation_runs.hpp"
+
+using namespace hmfnet;
+
+namespace {
+
+/// Runs the trial to its end with whole samples, `seconds_a_step[i]` for candidate i's steps;
+/// returns the counts it asked for, one per sample.
+std::vector<int> run_trial(ThreadTrial& trial, const std::vector<double>& seconds_a_step,
+                           const std::vector<int>& candidates) {
+  std::vector<int> asked;
+  while (trial.active()) {
+    const int threads = trial.threads();
+    asked.push_back(threads);
+    const std::int64_t steps = trial.chunk_limit();
+    std::size_t i = 0;
+    while (candidates[i] != threads) ++i;
+    trial.add(steps, seconds_a_step[i] * static_cast<double>(steps), false);
+  }
+  return asked;
+}
+
+}  // namespace
+
+TEST_CASE("The trial times each count after one untimed sample and keeps the fastest",
+          "[threads][thread_trial]") {
+  ThreadTrial trial({2, 1}, 5, 3);
+  REQUIRE(trial.active());
+  CHECK(trial.chunk_limit() == 5);
+  CHECK(trial.chosen() == 2);  // the rule's count until the trial ends
+  const std::vector<int> asked = run_trial(trial, {2e-6, 1e-6}, {2, 1});
+  CHECK(asked == std::vector<int>{2, 2, 2, 2, 1, 1, 1, 1});
+  CHECK_FALSE(trial.active());
+  CHECK(trial.chosen() == 1);
+  CHECK(trial.summary() == "2: 2 us, 1: 1 us -> 1");
+  CHECK(trial.chunk_limit() == std::numeric_limits<std::int64_t>::max());
+  CHECK(trial.threads() == 1);
+}
+
+TEST_CASE("The rule's count stays unless another beats it by the margin",
+          "[threads][thread_trial]") {
+  const double rule = 1e-5;
+  ThreadTrial within({2, 1}, 3, 2);
+  run_trial(within, {rule, (1.0 - 0.5 * k_trial_margin) * rule}, {2, 1});
+  CHECK(within.chosen() == 2);
+  ThreadTrial beyond({2, 1}, 3, 2);
+  run_trial(beyond, {rule, (1.0 - 2.0 * k_trial_margin) * rule}, {2, 1});
+  CHECK(beyond.chosen() == 1);
+  ThreadTrial three({1, 2, 4}, 1, 1);
+  CHECK(run_trial(three, {3e-6, 2e-6, 2.5e-6}, {1, 2, 4}) == std::vector<int>{1, 1, 2, 2, 4, 4});
+  CHECK(three.chosen() == 2);
+}
+
+TEST_CASE("A sample is the fastest of its chunks' sums, the untimed one never counts",
+          "[threads][thread_trial]") {
+  ThreadTrial trial({1, 2}, 4, 2);
+  // Candidate 1: an untimed sample that is very fast, then samples of 4 steps in chunks of 3 + 1.
+  trial.add(4, 1e-9, false);
+  CHECK(trial.chunk_limit() == 4);
+  trial.add(3, 3e-6, false);
+  CHECK(trial.chunk_limit() == 1);
+  CHECK_THROWS_AS(trial.add(2, 1e-6, false), std::invalid_argument);
+  trial.add(1, 5e-6, false);   // 8 us over 4 steps: 2 us a step
+  trial.add(4, 12e-6, false);  // 3 us a step: the slower sample is not kept
+  CHECK(trial.threads() == 2);
+  trial.add(4, 1e-9, false);
+  trial.add(4, 7.84e-6, false);  // 1.96 us a step: within the margin of 2
+  trial.add(4, 9e-6, false);
+  CHECK_FALSE(trial.active());
+  CHECK(trial.chosen() == 1);
+  CHECK(trial.summary() == "1: 2 us, 2: 1.96 us -> 1");
+}
+
+TEST_CASE("A change of the steps' kind starts the trial again, a few times at most",
+          "[threads][thread_trial]") {
+  ThreadTrial trial({2, 1}, 2, 1);
+  trial.add(2, 1e-6, false);
+  trial.add(2, 1e-6, false);
+  CHECK(trial.threads() == 1);  // candidate 1 now
+  trial.add(1, 1e-6, true);     // sampled steps: the trial starts again, this chunk its first
+  CHECK(trial.threads() == 2);
+  CHECK(trial.chunk_limit() == 1);
+  for (int i = 1; i < k_trial_restarts; ++i) trial.add(1, 1e-6, i % 2 == 0);
+  CHECK(trial.active());
+  trial.add(1, 1e-6, k_trial_restarts % 2 == 0);  // one change too many
+  CHECK_FALSE(trial.active());
+  CHECK(trial.chosen() == 2);
+  CHECK(trial.summary().rfind("no choice: the kind of step changed", 0) == 0);
+}
+
+TEST_CASE("A trial of one count makes no choice, and bad candidates are refused",
+          "[threads][thread_trial]") {
+  const ThreadTrial none;
+  CHECK_FALSE(none.active());
+  CHECK(none.summary().empty());
+  const ThreadTrial one({3}, 4, 2);
+  CHECK_FALSE(one.active());
+  CHECK(one.threads() == 3);
+  CHECK(one.summary().empty());
+  ThreadTrial unfinished({1, 2}, 4, 2);
+  unfinished.add(4, 1e-6, false);
+  CHECK(unfinished.summary() == "no choice: the run ended during the trial");
+  CHECK_THROWS_AS(ThreadTrial({}, 4, 2), std::invalid_argument);
+  CHECK_THROWS_AS(ThreadTrial({1, 1}, 4, 2), std::invalid_argument);
+  CHECK_THROWS_AS(ThreadTrial({0, 1}, 4, 2), std::invalid_argument);
+  CHECK_THROWS_AS(ThreadTrial({1, 2}, 0, 2), std::invalid_argument);
+}
+
+namespace {
+
+/// `p` run with the default count, two threads offered, against the same run on one thread:
+/// the same bits, with a trial on one rank and none on several.
+void check_trial_keeps_bits(const DistributedNetwork& d, const std::vector<double>& degrees,
+                            CouplingForce& force, SimulationParameters p) {
+  const ThreadCountScope offered(2);
+  p.threads = 0;
+  const SimulationResult tried = simulate(d, degrees, force, p);
+  CHECK(omp_get_max_threads() == 2);  // restored after the run
+  p.threads = 1;
+  const SimulationResult one = simulate(d, degrees, force, p);
+  CHECK(one.thread_trial.empty());  // a count given: no trial
+  if (ParallelSession::ranks() == 1) {
+    INFO(tried.thread_trial);
+    CHECK(tried.thread_trial.find("->") != std::string::npos);  // it ran to its choice
+  } else {
+    CHECK(tried.thread_trial.empty());  // ranks would time each other's waits
+  }
+  REQUIRE(tried.steps == one.steps);
+  CHECK(tried.series.R == one.series.R);
+  CHECK(tried.series.energy == one.series.energy);
+  CHECK(tried.series.momentum == one.series.momentum);
+  REQUIRE(tried.points.size() == one.points.size());
+  for (std::size_t k = 0; k < one.points.size(); ++k) {
+    CHECK(tried.points[k].R_mean == one.points[k].R_mean);
+    CHECK(tried.points[k].energy_rel_error_max == one.points[k].energy_rel_error_max);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("A sparse run whose default count is tried on its first steps gives one thread's bits",
+          "[threads][thread_trial]") {
+  // ER N = 2 10^4, degree ~5: ~5 10^5 units of the rule's work a step (10^5 stored entries and
+  // 2 10^4 rows of k_row_work), so samples of 8 steps and 64 trial steps, under 1/40 of the 3000
+  // steps below (simulation.cpp: thread_trial). The transient ends after 25 steps, inside the
+  // trial, which then starts again on sampled steps.
+  const Network net = erdos_renyi({20000, 5.0 / 20000.0, 3});
+  const DistributedNetwork d(net);
+  NetworkForce force(d);
+  SimulationParameters p = test::short_run();
+  p.h = 0.04;
+  p.duration = 40.0;
+  p.transient = 1.0;
+  p.record_stride = 50;
+  check_trial_keeps_bits(d, net.degrees(), force, p);
+}
+
+TEST_CASE("A rank-one run whose default count is tried gives one thread's bits",
+          "[threads][thread_trial]") {
+  // K_N N = 2000, 16 replicas: 4.8 10^5 units a step, samples of 9 steps, 72 trial steps of the
+  // 3000 below. One block of the ordered sums (2048 rows): one thread takes the fused pass, two
+  // the separate passes (rank_one_fused.cpp), so the trial switches between the two.
+  const CompleteGraph graph = CompleteGraph::make(2000, false);
+  const DistributedNetwork d(graph);
+  RankOneForce force(complete_graph_structure(graph), d.first_row(), d.local_size());
+  SimulationParameters p = test::short_run();
+  p.K = {1.0, 2.0};  // K lambda / N = 1, 2: the all-to-all HMF's scale
+  p.replicas.clear();
+  for (std::uint64_t seed = 11; seed < 27; ++seed) p.replicas.push_back({6.0, 1.0, seed});
+  p.h = 0.04;
+  p.duration = 60.0;
+  p.transient = 1.0;
+  p.record_stride = 50;
+  check_trial_keeps_bits(d, std::vector<double>(std::size_t{2000}, graph.degree()), force, p);
+}
