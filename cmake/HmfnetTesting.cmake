@@ -28,6 +28,9 @@ set(HMFNET_COST_CLI 10)
 function(hmfnet_catch_tests target label timeout)
   set(leaks)
   if("LEAK_CHECKED" IN_LIST ARGN AND HMFNET_SANITIZE MATCHES "address")
+    if(CMAKE_VERSION VERSION_LESS 3.22)  # older CMake ignores the property: no leak check at all
+      message(FATAL_ERROR "The leak checks of ${target} need CMake 3.22 (ENVIRONMENT_MODIFICATION)")
+    endif()
     set(leaks ENVIRONMENT_MODIFICATION
         "ASAN_OPTIONS=set:detect_leaks=1:strict_string_checks=1:check_initialization_order=1")
   endif()

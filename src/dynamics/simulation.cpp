@@ -35,6 +35,17 @@ using Clock = std::chrono::steady_clock;
 
 std::int64_t steps_for(double time, double h) { return std::llround(time / h); }
 
+// The default count's trial (thread_trial.hpp; simulate: thread_trial). A sample is
+// k_trial_sample_work units of the rule's work (1-6 ms at 0.25-1.5 ns a unit); a step of more
+// keeps the rule's count, 2 threads or more there under either wait policy (every measured
+// network of 4 10^6 units and more ran 1.6-2.0x faster on 2 threads than on 1 on both machines:
+// docs/performance.md), and on a network large enough that a switch of the team, which makes the
+// sparse force cut its segments again (NetworkForce::prepare_segments), would cost a copy of its
+// column indices. The trial's steps are at most 1 / k_trial_share of the run's steps left.
+constexpr std::int64_t k_trial_sample_work = 4'000'000;
+constexpr int k_trial_samples = 3;
+constexpr double k_trial_share = 40.0;
+
 /// Steps of the whole schedule, every segment.
 double total_steps(const SimulationParameters& p) {
   double total = 0.0;
@@ -349,6 +360,7 @@ void Run::finish(bool interrupted) {
   m_result.force_name = m_force.name();
   m_result.device = m_stepper->device();
   m_result.thread_trial = m_trial.summary();
+  if (m_trial.active()) omp_set_num_threads(m_trial.chosen());  // the run ended during the trial
 }
 
 void Run::restore(const Checkpoint& c) {
@@ -444,6 +456,11 @@ SimulationResult Run::execute() {
                         std::filesystem::exists(m_params.checkpoint_path);
   if (resuming) {
     restore(read_checkpoint(m_params.checkpoint_path));
+    // Eligible by the whole run's steps (simulate), but only the rest of them run now.
+    if (static_cast<double>(m_trial.steps()) * k_trial_share >
+        total_steps(m_params) - static_cast<double>(m_result.steps)) {
+      m_trial = ThreadTrial();
+    }
   } else {
     start_segment(0);
   }
@@ -479,7 +496,9 @@ SimulationResult Run::execute() {
       const Clock::time_point chunk_start = Clock::now();
       m_stepper->advance(*m_integrator, m_h, K, n, sampled ? &order : nullptr);
       if (m_trial.active()) {
-        m_trial.add(n, std::chrono::duration<double>(Clock::now() - chunk_start).count(), sampled);
+        // Steps of one kind cost the same: one segment's integrator and step, sampled or not.
+        m_trial.add(n, std::chrono::duration<double>(Clock::now() - chunk_start).count(),
+                    2 * static_cast<std::int64_t>(k) + (sampled ? 1 : 0));
         if (!m_trial.active()) omp_set_num_threads(m_trial.chosen());
       }
       session_steps += n;
@@ -505,19 +524,16 @@ SimulationResult Run::execute() {
 }
 
 /// The trial of the default thread count (thread_trial.hpp) for a run the rule gave `by_rule`
-/// threads: the rule's count, 1 and the `available` threads OpenMP offers, each timed over
-/// samples of k_trial_sample_work units of the rule's work. None where one thread is offered,
-/// where the run has several ranks (each would time the others' waits in the collectives, and a
-/// rank's chunks must not depend on its clock), on a GPU, or where the trial's steps would
-/// exceed 1 / k_trial_share of the run: were a count 8x slower (two PASSIVE threads ran 7x slower
-/// on the Intel Xeon at K_N N = 10^4), its half of the trial's 2.5% of the steps would cost the
-/// run 7 x 1.25% ~ 9% (docs/performance.md "The thread rule measured at run time").
+/// threads: the rule's count, 1 and the `available` threads OpenMP offers (not the counts in
+/// between), each timed over samples of k_trial_sample_work units of the rule's work. None where
+/// one thread is offered, where the run has several ranks (each would time the others' waits in
+/// the collectives, and a rank's chunks must not depend on its clock), on a GPU, where a step is
+/// more than a sample's work, or where the trial's steps would exceed 1 / k_trial_share of the
+/// run's (docs/performance.md "The thread rule measured at run time").
 ThreadTrial thread_trial(const SimulationParameters& params, int by_rule, int available,
                          std::int64_t work) {
-  constexpr std::int64_t k_trial_sample_work = 4'000'000;  // 1-6 ms at 0.25-1.5 ns a unit
-  constexpr int k_trial_samples = 3;
-  constexpr double k_trial_share = 40.0;
   if (available < 2 || ParallelSession::ranks() > 1 || params.device != "cpu") return {};
+  if (work > k_trial_sample_work) return {};
   std::vector<int> candidates{by_rule};
   for (const int c : {1, available}) {
     if (std::find(candidates.begin(), candidates.end(), c) == candidates.end())

@@ -39,14 +39,18 @@ void ThreadTrial::restart() {
   m_best.assign(m_candidates.size(), std::numeric_limits<double>::infinity());
 }
 
-void ThreadTrial::add(std::int64_t steps, double seconds, bool sampled) {
+std::int64_t ThreadTrial::steps() const {
+  return static_cast<std::int64_t>(m_candidates.size()) * (m_samples + 1) * m_sample_steps;
+}
+
+void ThreadTrial::add(std::int64_t steps, double seconds, std::int64_t kind) {
   if (!m_active) return;
   if (steps < 1 || steps > chunk_limit()) {
     throw std::invalid_argument("ThreadTrial: a chunk must take 1 to chunk_limit() steps");
   }
-  if (m_kind_known && sampled != m_sampled) {
-    // The samples so far timed the other kind of step: start again on this kind, whose chunk
-    // then counts as the first of the new trial's untimed sample.
+  if (m_kind_known && kind != m_kind) {
+    // The samples so far timed another kind of step: start again on this kind, from the next
+    // chunk (this one ran at the count being tried, not at the first candidate's).
     if (m_restarts == k_trial_restarts) {
       m_gave_up =
           "the kind of step changed more than " + std::to_string(k_trial_restarts) + " times";
@@ -55,19 +59,28 @@ void ThreadTrial::add(std::int64_t steps, double seconds, bool sampled) {
     }
     ++m_restarts;
     restart();
+    m_kind = kind;
+    m_kind_known = true;
+    return;
   }
-  m_sampled = sampled;
+  m_kind = kind;
   m_kind_known = true;
   m_steps_in_sample += steps;
   m_seconds_in_sample += seconds;
   if (m_steps_in_sample < m_sample_steps) return;
+  bool drop = false;
   if (m_sample > 0) {
     double& best = m_best[m_candidate];
     best = std::min(best, m_seconds_in_sample / static_cast<double>(m_sample_steps));
+    if (m_candidate > 0 && m_sample == 1) {
+      const double fastest = *std::min_element(
+          m_best.begin(), m_best.begin() + static_cast<std::ptrdiff_t>(m_candidate));
+      drop = best > k_trial_abandon * fastest;
+    }
   }
   m_steps_in_sample = 0;
   m_seconds_in_sample = 0.0;
-  if (++m_sample <= m_samples) return;
+  if (++m_sample <= m_samples && !drop) return;
   m_sample = 0;
   if (++m_candidate == m_candidates.size()) finish();
 }

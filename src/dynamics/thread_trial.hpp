@@ -11,10 +11,13 @@
 // each candidate in order, one sample of `sample_steps` untimed (the team starts, a force decides
 // its blocking again: NetworkForce::prepare_segments), then `samples` timed samples; the count
 // whose fastest sample (per step) is fastest is kept, the first candidate (the rule's) unless
-// another is faster by more than k_trial_margin. A sample is made of whole chunks (the caller
-// limits each chunk to chunk_limit()) of one kind: a chunk of the other kind (sampled steps, which
-// form the order sums, after unsampled ones) starts the trial again, at most k_trial_restarts
-// times; after that, or if the run ends first, the first candidate stays.
+// another is faster by more than k_trial_margin. A candidate whose first timed sample is slower
+// than k_trial_abandon times the fastest so far takes no more samples. A sample is made of whole
+// chunks (the caller limits each chunk to chunk_limit()) of one kind, a number the caller gives
+// to steps of one cost (a segment's integrator and step; sampled steps form the order sums,
+// transient ones do not): a chunk of another kind starts the trial again, itself uncounted (it
+// ran at whatever count was being tried), at most k_trial_restarts times; after that, or if the
+// run ends first, the first candidate stays.
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -27,6 +30,9 @@ namespace hmfnet {
 inline constexpr double k_trial_margin = 0.03;
 /// How often a change of the chunks' kind may start the trial again before it gives up.
 inline constexpr int k_trial_restarts = 2;
+/// A candidate this much slower than the fastest so far, in its first timed sample, is dropped:
+/// an all-cores team that sleeps at every barrier may run many times slower than one thread.
+inline constexpr double k_trial_abandon = 2.0;
 
 class ThreadTrial {
  public:
@@ -41,8 +47,11 @@ class ThreadTrial {
   /// Steps the next chunk may take so that it ends with the current sample (no limit when
   /// inactive).
   std::int64_t chunk_limit() const;
-  /// A chunk of `steps` (<= chunk_limit()) that took `seconds` at threads(); `sampled`: its kind.
-  void add(std::int64_t steps, double seconds, bool sampled);
+  /// A chunk of `steps` (<= chunk_limit()) that took `seconds` at threads(); `kind`: its cost
+  /// class (steps of one kind cost the same at a given count).
+  void add(std::int64_t steps, double seconds, std::int64_t kind);
+  /// Steps of one whole trial with every sample taken: candidates x (samples + 1) x sample steps.
+  std::int64_t steps() const;
   /// The count chosen once the trial ended; the first candidate before that or if it gave up.
   int chosen() const { return m_chosen; }
   /// Each candidate's fastest sample in microseconds a step, and the choice: "1: 81.2 us, 2:
@@ -59,7 +68,7 @@ class ThreadTrial {
   bool m_active = false;
   int m_chosen = 0;
   int m_restarts = 0;
-  bool m_sampled = false;  ///< the kind of the trial's chunks, fixed by its first chunk
+  std::int64_t m_kind = 0;  ///< the kind of the trial's chunks, fixed by its first chunk
   bool m_kind_known = false;
   std::size_t m_candidate = 0;  ///< index of the count being timed
   int m_sample = 0;             ///< 0: the untimed sample, 1..samples: timed ones

@@ -35,7 +35,7 @@ std::vector<int> run_trial(ThreadTrial& trial, const std::vector<double>& second
     const std::int64_t steps = trial.chunk_limit();
     std::size_t i = 0;
     while (candidates[i] != threads) ++i;
-    trial.add(steps, seconds_a_step[i] * static_cast<double>(steps), false);
+    trial.add(steps, seconds_a_step[i] * static_cast<double>(steps), 0);
   }
   return asked;
 }
@@ -75,17 +75,17 @@ TEST_CASE("A sample is the fastest of its chunks' sums, the untimed one never co
           "[threads][thread_trial]") {
   ThreadTrial trial({1, 2}, 4, 2);
   // Candidate 1: an untimed sample that is very fast, then samples of 4 steps in chunks of 3 + 1.
-  trial.add(4, 1e-9, false);
+  trial.add(4, 1e-9, 0);
   CHECK(trial.chunk_limit() == 4);
-  trial.add(3, 3e-6, false);
+  trial.add(3, 3e-6, 0);
   CHECK(trial.chunk_limit() == 1);
-  CHECK_THROWS_AS(trial.add(2, 1e-6, false), std::invalid_argument);
-  trial.add(1, 5e-6, false);   // 8 us over 4 steps: 2 us a step
-  trial.add(4, 12e-6, false);  // 3 us a step: the slower sample is not kept
+  CHECK_THROWS_AS(trial.add(2, 1e-6, 0), std::invalid_argument);
+  trial.add(1, 5e-6, 0);   // 8 us over 4 steps: 2 us a step
+  trial.add(4, 12e-6, 0);  // 3 us a step: the slower sample is not kept
   CHECK(trial.threads() == 2);
-  trial.add(4, 1e-9, false);
-  trial.add(4, 7.84e-6, false);  // 1.96 us a step: within the margin of 2
-  trial.add(4, 9e-6, false);
+  trial.add(4, 1e-9, 0);
+  trial.add(4, 7.84e-6, 0);  // 1.96 us a step: within the margin of 2
+  trial.add(4, 9e-6, 0);
   CHECK_FALSE(trial.active());
   CHECK(trial.chosen() == 1);
   CHECK(trial.summary() == "1: 2 us, 2: 1.96 us -> 1");
@@ -94,18 +94,33 @@ TEST_CASE("A sample is the fastest of its chunks' sums, the untimed one never co
 TEST_CASE("A change of the steps' kind starts the trial again, a few times at most",
           "[threads][thread_trial]") {
   ThreadTrial trial({2, 1}, 2, 1);
-  trial.add(2, 1e-6, false);
-  trial.add(2, 1e-6, false);
+  CHECK(trial.steps() == 2 * 2 * 2);
+  trial.add(2, 1e-6, 0);
+  trial.add(2, 1e-6, 0);
   CHECK(trial.threads() == 1);  // candidate 1 now
-  trial.add(1, 1e-6, true);     // sampled steps: the trial starts again, this chunk its first
+  trial.add(1, 1e-6, 1);        // another kind: the trial starts again, this chunk uncounted
   CHECK(trial.threads() == 2);
+  CHECK(trial.chunk_limit() == 2);
+  trial.add(1, 1e-6, 1);  // the same kind: half of the untimed sample
   CHECK(trial.chunk_limit() == 1);
-  for (int i = 1; i < k_trial_restarts; ++i) trial.add(1, 1e-6, i % 2 == 0);
+  for (int i = 1; i < k_trial_restarts; ++i) trial.add(1, 1e-6, 1 + i);
   CHECK(trial.active());
-  trial.add(1, 1e-6, k_trial_restarts % 2 == 0);  // one change too many
+  trial.add(1, 1e-6, 1 + k_trial_restarts);  // one change too many
   CHECK_FALSE(trial.active());
   CHECK(trial.chosen() == 2);
   CHECK(trial.summary().rfind("no choice: the kind of step changed", 0) == 0);
+}
+
+TEST_CASE("A count far slower than the fastest so far takes no more samples",
+          "[threads][thread_trial]") {
+  ThreadTrial trial({1, 4, 2}, 1, 3);
+  const std::vector<int> asked =
+      run_trial(trial, {1e-6, (k_trial_abandon + 0.5) * 1e-6, 0.5e-6}, {1, 4, 2});
+  CHECK(asked == std::vector<int>{1, 1, 1, 1, 4, 4, 2, 2, 2, 2});
+  CHECK(trial.chosen() == 2);
+  CHECK(trial.summary() == "1: 1 us, 4: 2.5 us, 2: 0.5 us -> 2");
+  ThreadTrial kept({1, 2}, 1, 3);  // within the factor: every sample taken
+  CHECK(run_trial(kept, {1e-6, 0.9 * k_trial_abandon * 1e-6}, {1, 2}).size() == 8);
 }
 
 TEST_CASE("A trial of one count makes no choice, and bad candidates are refused",
@@ -118,7 +133,7 @@ TEST_CASE("A trial of one count makes no choice, and bad candidates are refused"
   CHECK(one.threads() == 3);
   CHECK(one.summary().empty());
   ThreadTrial unfinished({1, 2}, 4, 2);
-  unfinished.add(4, 1e-6, false);
+  unfinished.add(4, 1e-6, 0);
   CHECK(unfinished.summary() == "no choice: the run ended during the trial");
   CHECK_THROWS_AS(ThreadTrial({}, 4, 2), std::invalid_argument);
   CHECK_THROWS_AS(ThreadTrial({1, 1}, 4, 2), std::invalid_argument);
@@ -141,7 +156,9 @@ void check_trial_keeps_bits(const DistributedNetwork& d, const std::vector<doubl
   CHECK(one.thread_trial.empty());  // a count given: no trial
   if (ParallelSession::ranks() == 1) {
     INFO(tried.thread_trial);
-    CHECK(tried.thread_trial.find("->") != std::string::npos);  // it ran to its choice
+    const std::size_t arrow = tried.thread_trial.find("-> ");
+    REQUIRE(arrow != std::string::npos);  // it ran to its choice, and went on at it
+    CHECK(tried.threads == std::stoi(tried.thread_trial.substr(arrow + 3)));
   } else {
     CHECK(tried.thread_trial.empty());  // ranks would time each other's waits
   }
