@@ -46,6 +46,11 @@ constexpr std::int64_t k_trial_sample_work = 4'000'000;
 constexpr int k_trial_samples = 3;
 constexpr double k_trial_share = 40.0;
 
+/// Whether a whole `trial` takes at most 1 / k_trial_share of `steps_left`.
+bool trial_fits(const ThreadTrial& trial, double steps_left) {
+  return static_cast<double>(trial.steps()) * k_trial_share <= steps_left;
+}
+
 /// Steps of the whole schedule, every segment.
 double total_steps(const SimulationParameters& p) {
   double total = 0.0;
@@ -457,10 +462,8 @@ SimulationResult Run::execute() {
   if (resuming) {
     restore(read_checkpoint(m_params.checkpoint_path));
     // Eligible by the whole run's steps (simulate), but only the rest of them run now.
-    if (static_cast<double>(m_trial.steps()) * k_trial_share >
-        total_steps(m_params) - static_cast<double>(m_result.steps)) {
+    if (!trial_fits(m_trial, total_steps(m_params) - static_cast<double>(m_result.steps)))
       m_trial = ThreadTrial();
-    }
   } else {
     start_segment(0);
   }
@@ -541,11 +544,9 @@ ThreadTrial thread_trial(const SimulationParameters& params, int by_rule, int av
   }
   const std::int64_t sample_steps =
       std::max<std::int64_t>(1, (k_trial_sample_work + work - 1) / std::max<std::int64_t>(work, 1));
-  const double trial_steps = static_cast<double>(candidates.size()) *
-                             static_cast<double>(k_trial_samples + 1) *
-                             static_cast<double>(sample_steps);
-  if (trial_steps * k_trial_share > total_steps(params)) return {};
-  return ThreadTrial(std::move(candidates), sample_steps, k_trial_samples);
+  ThreadTrial trial(std::move(candidates), sample_steps, k_trial_samples);
+  if (!trial_fits(trial, total_steps(params))) return {};
+  return trial;
 }
 
 }  // namespace

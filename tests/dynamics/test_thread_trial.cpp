@@ -210,3 +210,41 @@ TEST_CASE("A rank-one run whose default count is tried gives one thread's bits",
   p.record_stride = 50;
   check_trial_keeps_bits(d, std::vector<double>(std::size_t{2000}, graph.degree()), force, p);
 }
+
+TEST_CASE("A resumed run tries the default count only where its trial fits the steps left",
+          "[threads][thread_trial][checkpoint]") {
+  // The network of the sparse case above: trials of 64 steps (at most 72, samples of 9), so
+  // 64 x 40 = 2560 of the 3000 steps at the start (simulation.cpp: trial_fits). Stopped after
+  // 100 steps, 2900 are left and the resumed run tries again; stopped after 1000, 2000 are left,
+  // under 40 trials of even 2 counts x 4 samples x 8 steps, and it keeps the rule's count.
+  const Network net = erdos_renyi({20000, 5.0 / 20000.0, 3});
+  const DistributedNetwork d(net);
+  NetworkForce force(d);
+  const ThreadCountScope offered(2);
+  SimulationParameters p = test::short_run();
+  p.h = 0.04;
+  p.duration = 40.0;
+  p.transient = 1.0;
+  p.record_stride = 50;
+  p.threads = 0;
+  p.checkpoint_path = test::temp_path("hmfnet_test_trial_resume");
+  p.checkpoint_seconds = 0.0;
+  for (const std::int64_t stop : {std::int64_t{100}, std::int64_t{1000}}) {
+    INFO("stopped after " << stop << " steps");
+    test::remove_on_root(p.checkpoint_path);
+    p.resume = false;
+    p.stop_after_steps = stop;
+    const SimulationResult first = simulate(d, net.degrees(), force, p);
+    REQUIRE(first.steps == stop);
+    p.resume = true;
+    p.stop_after_steps = 0;
+    const SimulationResult resumed = simulate(d, net.degrees(), force, p);
+    REQUIRE(resumed.resumed);
+    REQUIRE(resumed.steps == 3000);
+    INFO(resumed.thread_trial);
+    const bool tried = resumed.thread_trial.find("-> ") != std::string::npos;
+    CHECK(tried == (ParallelSession::ranks() == 1 && stop == 100));
+    if (!tried) CHECK(resumed.thread_trial.empty());
+  }
+  test::remove_on_root(p.checkpoint_path);
+}
