@@ -7,13 +7,12 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/index_cast.hpp"
 #include "core/random.hpp"
 
 namespace hmfnet {
 
 namespace {
-
-std::size_t idx(std::int64_t k) { return static_cast<std::size_t>(k); }
 
 // Upper neighbours m > n of row n, in increasing order, by geometric skipping: the gap to the
 // next linked pair is Geometric(q), drawn as floor(log U / log(1 - q)).

@@ -5,13 +5,11 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/index_cast.hpp"
 
 namespace hmfnet {
 
 namespace {
-
-std::size_t idx(EdgeOffset k) { return static_cast<std::size_t>(k); }
-std::size_t idx(NodeIndex i) { return static_cast<std::size_t>(i); }
 
 // Position of column j in row i, or -1. Rows are sorted, so binary search.
 EdgeOffset find_in_row(const std::vector<EdgeOffset>& row_ptr, const std::vector<NodeIndex>& cols,

@@ -3,11 +3,9 @@
 #include <algorithm>
 #include <numeric>
 
-namespace hmfnet {
+#include "core/index_cast.hpp"
 
-namespace {
-std::size_t idx(NodeIndex i) { return static_cast<std::size_t>(i); }
-}  // namespace
+namespace hmfnet {
 
 ParityForest::ParityForest(NodeIndex n)
     : m_parent(idx(n)), m_parity(idx(n), 0), m_size(idx(n), 1), m_components(n) {

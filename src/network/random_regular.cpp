@@ -7,13 +7,12 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/index_cast.hpp"
 #include "core/random.hpp"
 
 namespace hmfnet {
 
 namespace {
-
-std::size_t idx(std::int64_t k) { return static_cast<std::size_t>(k); }
 
 // The unordered pairs joined so far: open addressing on 64-bit keys (min * 2^32 + max + 1, so 0
 // marks an empty slot), at most half full. std::unordered_set costs ~3x the memory.

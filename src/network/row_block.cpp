@@ -3,12 +3,9 @@
 #include <algorithm>
 
 #include "core/error.hpp"
+#include "core/index_cast.hpp"
 
 namespace hmfnet {
-
-namespace {
-std::size_t idx(NodeIndex i) { return static_cast<std::size_t>(i); }
-}  // namespace
 
 RowView RowBlock::row(NodeIndex r) const {
   const auto first = static_cast<std::size_t>(row_ptr[idx(r)]);

@@ -2,11 +2,9 @@
 
 #include <algorithm>
 
-namespace hmfnet {
+#include "core/index_cast.hpp"
 
-namespace {
-std::size_t idx(NodeIndex i) { return static_cast<std::size_t>(i); }
-}  // namespace
+namespace hmfnet {
 
 Components connected_components(const Network& network) {
   Components c;

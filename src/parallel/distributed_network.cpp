@@ -6,13 +6,12 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "core/index_cast.hpp"
 #include "parallel/distributed_network_impl.hpp"
 
 namespace hmfnet {
 
 namespace {
-
-std::size_t idx(NodeIndex i) { return static_cast<std::size_t>(i); }
 
 const DistributedNetwork::Impl& require_rows(const DistributedNetwork::Impl& impl,
                                              const char* what) {
