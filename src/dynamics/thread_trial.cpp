@@ -27,20 +27,23 @@ int ThreadTrial::threads() const { return m_active ? m_candidates[m_candidate] :
 
 std::int64_t ThreadTrial::chunk_limit() const {
   if (!m_active) return std::numeric_limits<std::int64_t>::max();
-  return m_sample_steps - m_steps_in_sample;
+  return m_warm ? k_trial_warm_steps : m_sample_steps - m_steps_in_sample;
 }
 
 void ThreadTrial::restart() {
   m_candidate = 0;
-  m_sample = 0;
+  m_round = 0;
+  m_warm = true;
   m_steps_in_sample = 0;
   m_seconds_in_sample = 0.0;
   m_kind_known = false;
   m_best.assign(m_candidates.size(), std::numeric_limits<double>::infinity());
+  m_dropped.assign(m_candidates.size(), false);
 }
 
 std::int64_t ThreadTrial::steps() const {
-  return static_cast<std::int64_t>(m_candidates.size()) * (m_samples + 1) * m_sample_steps;
+  return static_cast<std::int64_t>(m_candidates.size()) * m_samples *
+         (m_sample_steps + k_trial_warm_steps);
 }
 
 void ThreadTrial::add(std::int64_t steps, double seconds, std::int64_t kind) {
@@ -65,24 +68,38 @@ void ThreadTrial::add(std::int64_t steps, double seconds, std::int64_t kind) {
   }
   m_kind = kind;
   m_kind_known = true;
+  if (m_warm) {
+    m_warm = false;
+    return;
+  }
   m_steps_in_sample += steps;
   m_seconds_in_sample += seconds;
   if (m_steps_in_sample < m_sample_steps) return;
-  bool drop = false;
-  if (m_sample > 0) {
-    double& best = m_best[m_candidate];
-    best = std::min(best, m_seconds_in_sample / static_cast<double>(m_sample_steps));
-    if (m_candidate > 0 && m_sample == 1) {
-      const double fastest = *std::min_element(
-          m_best.begin(), m_best.begin() + static_cast<std::ptrdiff_t>(m_candidate));
-      drop = best > k_trial_abandon * fastest;
-    }
+  const double per_step = m_seconds_in_sample / static_cast<double>(m_sample_steps);
+  m_best[m_candidate] = std::min(m_best[m_candidate], per_step);
+  if (m_round == 0 && m_candidate > 0) {
+    const double fastest = *std::min_element(
+        m_best.begin(), m_best.begin() + static_cast<std::ptrdiff_t>(m_candidate));
+    m_dropped[m_candidate] = per_step > k_trial_abandon * fastest;
   }
   m_steps_in_sample = 0;
   m_seconds_in_sample = 0.0;
-  if (++m_sample <= m_samples && !drop) return;
-  m_sample = 0;
-  if (++m_candidate == m_candidates.size()) finish();
+  advance();
+}
+
+/// The next candidate not dropped, in this round or the next; the first is never dropped.
+void ThreadTrial::advance() {
+  const int last = m_candidates[m_candidate];
+  do {
+    if (++m_candidate == m_candidates.size()) {
+      m_candidate = 0;
+      if (++m_round == m_samples) {
+        finish();
+        return;
+      }
+    }
+  } while (m_dropped[m_candidate]);
+  m_warm = m_candidates[m_candidate] != last;
 }
 
 void ThreadTrial::finish() {

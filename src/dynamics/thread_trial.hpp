@@ -7,17 +7,22 @@
 // take its first steps at each count, time them, and go on at the fastest: the steps are the
 // run's own, none is repeated and no result changes.
 //
-// The protocol (a pure function of the steps it is told of, so it is tested with given times): for
-// each candidate in order, one sample of `sample_steps` untimed (the team starts, a force decides
-// its blocking again: NetworkForce::prepare_segments), then `samples` timed samples; the count
-// whose fastest sample (per step) is fastest is kept, the first candidate (the rule's) unless
-// another is faster by more than k_trial_margin. A candidate whose first timed sample is slower
-// than k_trial_abandon times the fastest so far takes no more samples. A sample is made of whole
-// chunks (the caller limits each chunk to chunk_limit()) of one kind, a number the caller gives
-// to steps of one cost (a segment's integrator and step; sampled steps form the order sums,
-// transient ones do not): a chunk of another kind starts the trial again, itself uncounted (it
-// ran at whatever count was being tried), at most k_trial_restarts times; after that, or if the
-// run ends first, the first candidate stays.
+// The protocol (a pure function of the steps it is told of, so it is tested with given times): in
+// `samples` rounds, each candidate in order takes one step untimed at its count (the team starts
+// or wakes, a force decides its blocking again: NetworkForce::prepare_segments), then a timed
+// sample of `sample_steps`. The rounds interleave the counts, so a slow spell of the machine (a
+// VM's neighbour, a clock change) that lasts a few samples slows samples of every count, not all
+// of one (on the AMD EPYC, one trial's three consecutive samples of 2 threads all ran ~40% slower
+// than their usual, and a benchmark row kept 1 thread where 2 ran 1.40x faster:
+// docs/performance.md, "The thread trial in rounds"). The count whose fastest sample (per step) is
+// fastest is kept, the first candidate (the rule's) unless another is faster by more than
+// k_trial_margin. A candidate whose sample in the first round is slower than k_trial_abandon times
+// the fastest before it takes no more samples. A sample is made of whole chunks (the caller limits
+// each chunk to chunk_limit()) of one kind, a number the caller gives to steps of one cost (a
+// segment's integrator and step; sampled steps form the order sums, transient ones do not): a chunk
+// of another kind starts the trial again, itself uncounted (it ran at whatever count was being
+// tried), at most k_trial_restarts times; after that, or if the run ends first, the first candidate
+// stays.
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -30,7 +35,9 @@ namespace hmfnet {
 inline constexpr double k_trial_margin = 0.03;
 /// How often a change of the chunks' kind may start the trial again before it gives up.
 inline constexpr int k_trial_restarts = 2;
-/// A candidate this much slower than the fastest so far, in its first timed sample, is dropped:
+/// Untimed steps before each timed sample at a count other than the last chunk's.
+inline constexpr std::int64_t k_trial_warm_steps = 1;
+/// A candidate this much slower than the fastest before it, in the first round, is dropped:
 /// an all-cores team that sleeps at every barrier may run many times slower than one thread.
 inline constexpr double k_trial_abandon = 2.0;
 
@@ -50,7 +57,8 @@ class ThreadTrial {
   /// A chunk of `steps` (<= chunk_limit()) that took `seconds` at threads(); `kind`: its cost
   /// class (steps of one kind cost the same at a given count).
   void add(std::int64_t steps, double seconds, std::int64_t kind);
-  /// Steps of one whole trial with every sample taken: candidates x (samples + 1) x sample steps.
+  /// Steps of one whole trial with every sample taken: candidates x samples x (sample steps +
+  /// k_trial_warm_steps).
   std::int64_t steps() const;
   /// The count chosen once the trial ended; the first candidate before that or if it gave up.
   int chosen() const { return m_chosen; }
@@ -60,6 +68,7 @@ class ThreadTrial {
 
  private:
   void restart();
+  void advance();
   void finish();
 
   std::vector<int> m_candidates;
@@ -71,7 +80,9 @@ class ThreadTrial {
   std::int64_t m_kind = 0;  ///< the kind of the trial's chunks, fixed by its first chunk
   bool m_kind_known = false;
   std::size_t m_candidate = 0;  ///< index of the count being timed
-  int m_sample = 0;             ///< 0: the untimed sample, 1..samples: timed ones
+  int m_round = 0;              ///< 0..samples - 1
+  bool m_warm = false;          ///< the next chunk is the untimed step before a sample
+  std::vector<bool> m_dropped;  ///< candidates that take no more samples
   std::int64_t m_steps_in_sample = 0;
   double m_seconds_in_sample = 0.0;
   /// Each candidate's fastest sample, seconds a step.

@@ -42,14 +42,15 @@ std::vector<int> run_trial(ThreadTrial& trial, const std::vector<double>& second
 
 }  // namespace
 
-TEST_CASE("The trial times each count after one untimed sample and keeps the fastest",
+TEST_CASE("The trial times the counts in turn, each after one untimed step, and keeps the fastest",
           "[threads][thread_trial]") {
   ThreadTrial trial({2, 1}, 5, 3);
   REQUIRE(trial.active());
-  CHECK(trial.chunk_limit() == 5);
+  CHECK(trial.chunk_limit() == k_trial_warm_steps);
+  CHECK(trial.steps() == 2 * 3 * (5 + k_trial_warm_steps));
   CHECK(trial.chosen() == 2);  // the rule's count until the trial ends
   const std::vector<int> asked = run_trial(trial, {2e-6, 1e-6}, {2, 1});
-  CHECK(asked == std::vector<int>{2, 2, 2, 2, 1, 1, 1, 1});
+  CHECK(asked == std::vector<int>{2, 2, 1, 1, 2, 2, 1, 1, 2, 2, 1, 1});
   CHECK_FALSE(trial.active());
   CHECK(trial.chosen() == 1);
   CHECK(trial.summary() == "2: 2 us, 1: 1 us -> 1");
@@ -71,20 +72,52 @@ TEST_CASE("The rule's count stays unless another beats it by the margin",
   CHECK(three.chosen() == 2);
 }
 
-TEST_CASE("A sample is the fastest of its chunks' sums, the untimed one never counts",
+TEST_CASE("A slow spell of the machine as long as a count's samples cannot decide the trial",
+          "[threads][thread_trial]") {
+  // 2 threads take 1 us a step, 1 thread 1.4 us; a spell makes `samples` timed samples in a row
+  // 1.6x slower. Taken one count after the other, some spell would cover every sample of 2 and
+  // keep 1; in rounds, each count has a sample outside any such spell.
+  const int samples = 3;
+  for (int spell = 0; spell + samples <= 2 * samples; ++spell) {
+    INFO("the spell starts at timed sample " << spell);
+    ThreadTrial trial({1, 2}, 4, samples);
+    int timed = 0;
+    while (trial.active()) {
+      const std::int64_t steps = trial.chunk_limit();
+      double seconds = (trial.threads() == 1 ? 1.4e-6 : 1e-6) * static_cast<double>(steps);
+      if (steps == k_trial_warm_steps) {
+        trial.add(steps, seconds, 0);
+        continue;
+      }
+      if (timed >= spell && timed < spell + samples) seconds *= 1.6;
+      trial.add(steps, seconds, 0);
+      ++timed;
+    }
+    CHECK(timed == 2 * samples);
+    CHECK(trial.chosen() == 2);
+  }
+}
+
+TEST_CASE("A sample is the fastest of its chunks' sums, the untimed steps never count",
           "[threads][thread_trial]") {
   ThreadTrial trial({1, 2}, 4, 2);
-  // Candidate 1: an untimed sample that is very fast, then samples of 4 steps in chunks of 3 + 1.
-  trial.add(4, 1e-9, 0);
+  // Round 1, count 1: an untimed step that is very fast, then a sample of 4 steps in chunks of
+  // 3 + 1.
+  CHECK_THROWS_AS(trial.add(2, 1e-9, 0), std::invalid_argument);  // the untimed step is one
+  trial.add(1, 1e-9, 0);
   CHECK(trial.chunk_limit() == 4);
   trial.add(3, 3e-6, 0);
   CHECK(trial.chunk_limit() == 1);
   CHECK_THROWS_AS(trial.add(2, 1e-6, 0), std::invalid_argument);
-  trial.add(1, 5e-6, 0);   // 8 us over 4 steps: 2 us a step
-  trial.add(4, 12e-6, 0);  // 3 us a step: the slower sample is not kept
+  trial.add(1, 5e-6, 0);  // 8 us over 4 steps: 2 us a step
   CHECK(trial.threads() == 2);
-  trial.add(4, 1e-9, 0);
+  trial.add(1, 1e-9, 0);
   trial.add(4, 7.84e-6, 0);  // 1.96 us a step: within the margin of 2
+  // Round 2.
+  CHECK(trial.threads() == 1);
+  trial.add(1, 1e-9, 0);
+  trial.add(4, 12e-6, 0);  // 3 us a step: the slower sample is not kept
+  trial.add(1, 1e-9, 0);
   trial.add(4, 9e-6, 0);
   CHECK_FALSE(trial.active());
   CHECK(trial.chosen() == 1);
@@ -94,15 +127,14 @@ TEST_CASE("A sample is the fastest of its chunks' sums, the untimed one never co
 TEST_CASE("A change of the steps' kind starts the trial again, a few times at most",
           "[threads][thread_trial]") {
   ThreadTrial trial({2, 1}, 2, 1);
-  CHECK(trial.steps() == 2 * 2 * 2);
-  trial.add(2, 1e-6, 0);
+  trial.add(1, 1e-6, 0);
   trial.add(2, 1e-6, 0);
   CHECK(trial.threads() == 1);  // candidate 1 now
   trial.add(1, 1e-6, 1);        // another kind: the trial starts again, this chunk uncounted
   CHECK(trial.threads() == 2);
+  CHECK(trial.chunk_limit() == k_trial_warm_steps);
+  trial.add(1, 1e-6, 1);  // the same kind: the untimed step
   CHECK(trial.chunk_limit() == 2);
-  trial.add(1, 1e-6, 1);  // the same kind: half of the untimed sample
-  CHECK(trial.chunk_limit() == 1);
   for (int i = 1; i < k_trial_restarts; ++i) trial.add(1, 1e-6, 1 + i);
   CHECK(trial.active());
   trial.add(1, 1e-6, 1 + k_trial_restarts);  // one change too many
@@ -116,11 +148,11 @@ TEST_CASE("A count far slower than the fastest so far takes no more samples",
   ThreadTrial trial({1, 4, 2}, 1, 3);
   const std::vector<int> asked =
       run_trial(trial, {1e-6, (k_trial_abandon + 0.5) * 1e-6, 0.5e-6}, {1, 4, 2});
-  CHECK(asked == std::vector<int>{1, 1, 1, 1, 4, 4, 2, 2, 2, 2});
+  CHECK(asked == std::vector<int>{1, 1, 4, 4, 2, 2, 1, 1, 2, 2, 1, 1, 2, 2});
   CHECK(trial.chosen() == 2);
   CHECK(trial.summary() == "1: 1 us, 4: 2.5 us, 2: 0.5 us -> 2");
   ThreadTrial kept({1, 2}, 1, 3);  // within the factor: every sample taken
-  CHECK(run_trial(kept, {1e-6, 0.9 * k_trial_abandon * 1e-6}, {1, 2}).size() == 8);
+  CHECK(run_trial(kept, {1e-6, 0.9 * k_trial_abandon * 1e-6}, {1, 2}).size() == 12);
 }
 
 TEST_CASE("A trial of one count makes no choice, and bad candidates are refused",
@@ -133,7 +165,7 @@ TEST_CASE("A trial of one count makes no choice, and bad candidates are refused"
   CHECK(one.threads() == 3);
   CHECK(one.summary().empty());
   ThreadTrial unfinished({1, 2}, 4, 2);
-  unfinished.add(4, 1e-6, 0);
+  unfinished.add(1, 1e-6, 0);
   CHECK(unfinished.summary() == "no choice: the run ended during the trial");
   CHECK_THROWS_AS(ThreadTrial({}, 4, 2), std::invalid_argument);
   CHECK_THROWS_AS(ThreadTrial({1, 1}, 4, 2), std::invalid_argument);
@@ -178,9 +210,9 @@ void check_trial_keeps_bits(const DistributedNetwork& d, const std::vector<doubl
 TEST_CASE("A sparse run whose default count is tried on its first steps gives one thread's bits",
           "[threads][thread_trial]") {
   // ER N = 2 10^4, degree ~5: ~5 10^5 units of the rule's work a step (10^5 stored entries and
-  // 2 10^4 rows of k_row_work), so samples of 8 steps and 64 trial steps, under 1/40 of the 3000
-  // steps below (simulation.cpp: thread_trial). The transient ends after 25 steps, inside the
-  // trial, which then starts again on sampled steps.
+  // 2 10^4 rows of k_row_work), so samples of 8 steps and 2 x 3 x (8 + 1) = 54 trial steps,
+  // under 1/40 of the 3000 steps below (simulation.cpp: thread_trial). The transient ends after 25
+  // steps, inside the trial, which then starts again on sampled steps.
   const Network net = erdos_renyi({20000, 5.0 / 20000.0, 3});
   const DistributedNetwork d(net);
   NetworkForce force(d);
@@ -194,7 +226,7 @@ TEST_CASE("A sparse run whose default count is tried on its first steps gives on
 
 TEST_CASE("A rank-one run whose default count is tried gives one thread's bits",
           "[threads][thread_trial]") {
-  // K_N N = 2000, 16 replicas: 4.8 10^5 units a step, samples of 9 steps, 72 trial steps of the
+  // K_N N = 2000, 16 replicas: 4.8 10^5 units a step, samples of 9 steps, 60 trial steps of the
   // 3000 below. One block of the ordered sums (2048 rows): one thread takes the fused pass, two
   // the separate passes (rank_one_fused.cpp), so the trial switches between the two.
   const CompleteGraph graph = CompleteGraph::make(2000, false);
@@ -213,10 +245,11 @@ TEST_CASE("A rank-one run whose default count is tried gives one thread's bits",
 
 TEST_CASE("A resumed run tries the default count only where its trial fits the steps left",
           "[threads][thread_trial][checkpoint]") {
-  // The network of the sparse case above: trials of 64 steps (at most 72, samples of 9), so
-  // 64 x 40 = 2560 of the 3000 steps at the start (simulation.cpp: trial_fits). Stopped after
-  // 100 steps, 2900 are left and the resumed run tries again; stopped after 1000, 2000 are left,
-  // under 40 trials of even 2 counts x 4 samples x 8 steps, and it keeps the rule's count.
+  // The network of the sparse case above: trials of 54 steps, 2 counts x 3 samples x (8 + 1),
+  // so 54 x 40 = 2160 of the 3000 steps at the start (simulation.cpp: trial_fits). Stopped after
+  // 100 steps, 2900 are left and the resumed run tries again (it would with samples of up to 11
+  // steps); stopped after 1500, 1500 are left, under 40 trials even with samples of 6 steps, and
+  // it keeps the rule's count.
   const Network net = erdos_renyi({20000, 5.0 / 20000.0, 3});
   const DistributedNetwork d(net);
   NetworkForce force(d);
@@ -229,7 +262,7 @@ TEST_CASE("A resumed run tries the default count only where its trial fits the s
   p.threads = 0;
   p.checkpoint_path = test::temp_path("hmfnet_test_trial_resume");
   p.checkpoint_seconds = 0.0;
-  for (const std::int64_t stop : {std::int64_t{100}, std::int64_t{1000}}) {
+  for (const std::int64_t stop : {std::int64_t{100}, std::int64_t{1500}}) {
     INFO("stopped after " << stop << " steps");
     test::remove_on_root(p.checkpoint_path);
     p.resume = false;
