@@ -9,5 +9,8 @@ namespace hmfnet {
 
 constexpr std::size_t idx(std::int32_t i) { return static_cast<std::size_t>(i); }
 constexpr std::size_t idx(std::int64_t k) { return static_cast<std::size_t>(k); }
+/// Any other type (an unsigned size, a long long, a short) is a compile error, not a conversion.
+template <class T>
+constexpr std::size_t idx(T) = delete;
 
 }  // namespace hmfnet

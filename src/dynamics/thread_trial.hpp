@@ -8,9 +8,10 @@
 // run's own, none is repeated and no result changes.
 //
 // The protocol (a pure function of the steps it is told of, so it is tested with given times): in
-// `samples` rounds, each candidate in order takes one step untimed at its count (the team starts
-// or wakes, a force decides its blocking again: NetworkForce::prepare_segments), then a timed
-// sample of `sample_steps`. The rounds interleave the counts, so a slow spell of the machine (a
+// `samples` rounds, each candidate in order takes one step untimed where the count changes (the
+// team starts or wakes, a force decides its blocking again: NetworkForce::prepare_segments), then
+// a timed sample of `sample_steps`; once every other candidate is dropped, the first one's samples
+// run back to back. The rounds interleave the counts, so a slow spell of the machine (a
 // VM's neighbour, a clock change) that lasts a few samples slows samples of every count, not all
 // of one (on the AMD EPYC, one trial's three consecutive samples of 2 threads all ran ~40% slower
 // than their usual, and a benchmark row kept 1 thread where 2 ran 1.40x faster:
@@ -51,8 +52,8 @@ class ThreadTrial {
   bool active() const { return m_active; }
   /// The count the next chunk runs at (while active).
   int threads() const;
-  /// Steps the next chunk may take so that it ends with the current sample (no limit when
-  /// inactive).
+  /// Steps the next chunk may take: k_trial_warm_steps for the untimed step before a sample, else
+  /// what is left of the current sample (no limit when inactive).
   std::int64_t chunk_limit() const;
   /// A chunk of `steps` (<= chunk_limit()) that took `seconds` at threads(); `kind`: its cost
   /// class (steps of one kind cost the same at a given count).

@@ -153,6 +153,13 @@ TEST_CASE("A count far slower than the fastest so far takes no more samples",
   CHECK(trial.summary() == "1: 1 us, 4: 2.5 us, 2: 0.5 us -> 2");
   ThreadTrial kept({1, 2}, 1, 3);  // within the factor: every sample taken
   CHECK(run_trial(kept, {1e-6, 0.9 * k_trial_abandon * 1e-6}, {1, 2}).size() == 12);
+  // Once the others are dropped, the first count's samples follow each other with no untimed
+  // step between them: its team is already running.
+  ThreadTrial alone({1, 2}, 1, 3);
+  const std::vector<int> alone_asked =
+      run_trial(alone, {1e-6, (k_trial_abandon + 1.0) * 1e-6}, {1, 2});
+  CHECK(alone_asked == std::vector<int>{1, 1, 2, 2, 1, 1, 1});
+  CHECK(alone.chosen() == 1);
 }
 
 TEST_CASE("A trial of one count makes no choice, and bad candidates are refused",
@@ -269,6 +276,10 @@ TEST_CASE("A resumed run tries the default count only where its trial fits the s
     p.stop_after_steps = stop;
     const SimulationResult first = simulate(d, net.degrees(), force, p);
     REQUIRE(first.steps == stop);
+    // The first run's trial (54 steps, begun again where the 25-step transient ends) ends
+    // within 100 steps, on one rank.
+    INFO(first.thread_trial);
+    CHECK((first.thread_trial.find("-> ") != std::string::npos) == (ParallelSession::ranks() == 1));
     p.resume = true;
     p.stop_after_steps = 0;
     const SimulationResult resumed = simulate(d, net.degrees(), force, p);
