@@ -135,7 +135,7 @@ def simulate(network, *, seed, K=None, K_over_Kc=None, K_sweep=None, sigma0=None
     """`hmfnet simulate --json` with the same options (defaults as the CLI: sigma0 0.35,
     omega 6, h 0.01, T 1000, transient 500, leapfrog), set on a typed request and checked by the
     request's own validation (the CLI's messages); threads=0 is the default count, as leaving
-    it out (the thread rule's, or on one rank the count whose first steps ran fastest); device="cuda" steps on a CUDA GPU (the same bits as "cpu", the default). Returns its dict; the per-K fields
+    it out (the thread rule's, or on a long enough run the count whose first steps ran fastest); device="cuda" steps on a CUDA GPU (the same bits as "cpu", the default). Returns its dict; the per-K fields
     (K, K_over_Kc, R_mean, R_sem, energy_rel_error_max, momentum_drift) also as numpy arrays,
     R_mean_replicas / R_sem_replicas as [K x replicas] arrays, and ``timeseries`` with t, K
     [records] and R, energy, momentum [records x replicas]. ``output`` writes the CLI's results

@@ -215,11 +215,10 @@ void add_simulate_options(CLI::App& app, SimulateFlags& f, const Run& run) {
   c->add_option("--replicas", r.replicas, "Independent replicas (seeds seed..seed+B-1, B <= 64)");
   // The request's 0 means "the thread rule's count"; on the command line that is the option left
   // out, so a typed 0 is refused here.
-  c->add_option(
-       "--threads", r.threads,
-       "OpenMP threads per rank (default: as the work per step pays for, at most the "
-       "cores shared by the ranks; on one rank and a long enough run, the count whose first "
-       "steps ran fastest)")
+  c->add_option("--threads", r.threads,
+                "OpenMP threads per rank (default: as the work per step pays for, at most the "
+                "cores shared by the ranks; on a long enough run, the count whose first steps ran "
+                "fastest)")
       ->check(CLI::Range(1, 1024));
   c->add_option("-o,--output", r.output, "Results file (HDF5)");
   c->add_option("--checkpoint", r.checkpoint, "Checkpoint file, written every few seconds");

@@ -500,8 +500,11 @@ SimulationResult Run::execute() {
       m_stepper->advance(*m_integrator, m_h, K, n, sampled ? &order : nullptr);
       if (m_trial.active()) {
         // Steps of one kind cost the same: one segment's integrator and step, sampled or not.
-        m_trial.add(n, std::chrono::duration<double>(Clock::now() - chunk_start).count(),
-                    2 * static_cast<std::int64_t>(k) + (sampled ? 1 : 0));
+        // Over several ranks, the slowest rank's time (the others wait for it at every step's
+        // halo exchange): every rank's trial is told the same and takes the same decisions.
+        const double seconds =
+            ParallelSession::max(std::chrono::duration<double>(Clock::now() - chunk_start).count());
+        m_trial.add(n, seconds, 2 * static_cast<std::int64_t>(k) + (sampled ? 1 : 0));
         if (!m_trial.active()) omp_set_num_threads(m_trial.chosen());
       }
       session_steps += n;
@@ -526,18 +529,32 @@ SimulationResult Run::execute() {
   return m_result;
 }
 
-/// The trial of the default thread count (thread_trial.hpp) for a run the rule gave `by_rule`
-/// threads: the rule's count, 1 and the `available` threads OpenMP offers (not the counts in
-/// between), each timed over samples of k_trial_sample_work units of the rule's work. None where
-/// one thread is offered, where the run has several ranks (each would time the others' waits in
-/// the collectives, and a rank's chunks must not depend on its clock), on a GPU, where a step is
-/// more than a sample's work, or where the trial's steps would exceed 1 / k_trial_share of the
-/// run's (docs/performance.md "The thread rule measured at run time").
-ThreadTrial thread_trial(const SimulationParameters& params, int by_rule, int available,
-                         std::int64_t work) {
-  if (available < 2 || ParallelSession::ranks() > 1 || params.device != "cpu") return {};
+/// What every rank's trial is made from, the same on all of them: the heaviest rank's work a
+/// step (the step takes as long as that rank's part) and the fewest threads a rank is offered.
+struct TrialInputs {
+  std::int64_t work;
+  int available;
+};
+
+TrialInputs trial_inputs(std::int64_t work, int available) {
+  // Work a step is far below 2^53: exact in a double.
+  return {static_cast<std::int64_t>(ParallelSession::max(static_cast<double>(work))),
+          -static_cast<int>(ParallelSession::max(-static_cast<double>(available)))};
+}
+
+/// The trial of the default thread count (thread_trial.hpp): the rule's count for the inputs, 1
+/// and all the threads offered (not the counts in between), each timed over samples of
+/// k_trial_sample_work units of the rule's work. Every rank makes the same trial from the same
+/// inputs and is told the same times (Run::execute), so the ranks switch counts at the same steps.
+/// None where one thread is offered, on a GPU, where a step is more than a sample's work, or
+/// where the trial's steps would exceed 1 / k_trial_share of the run's (docs/performance.md "The
+/// thread rule measured at run time").
+ThreadTrial thread_trial(const SimulationParameters& params, TrialInputs in) {
+  const std::int64_t work = in.work;
+  const int available = in.available;
+  if (available < 2 || params.device != "cpu") return {};
   if (work > k_trial_sample_work) return {};
-  std::vector<int> candidates{by_rule};
+  std::vector<int> candidates{default_threads(work, available)};
   for (const int c : {1, available}) {
     if (std::find(candidates.begin(), candidates.end(), c) == candidates.end())
       candidates.push_back(c);
@@ -565,8 +582,9 @@ SimulationResult simulate(const DistributedNetwork& network, const std::vector<d
                                       static_cast<std::int64_t>(pass_lanes), force.row_work());
   const int available = omp_get_max_threads();
   const int by_rule = params.threads > 0 ? params.threads : default_threads(work, available);
+  const TrialInputs shared = trial_inputs(work, available);  // collective: on every rank
   const auto trial = [&](const SimulationParameters& run) {
-    return params.threads > 0 ? ThreadTrial() : thread_trial(run, by_rule, available, work);
+    return params.threads > 0 ? ThreadTrial() : thread_trial(run, shared);
   };
   const ThreadCountScope threads(by_rule);
   SimulationResult result;
