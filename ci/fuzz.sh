@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The fuzzing job: libFuzzer + AddressSanitizer + UndefinedBehaviorSanitizer on the network readers
 # and the CLI grammar (tests/fuzz; "readers" below includes cli_arguments). Builds hmfnet_core and the harnesses with clang in build-fuzz/ (HMFNET_FUZZ=ON: no
-# Trilinos), replays the kept crashes, then fuzzes each reader for FUZZ_SECONDS (default 60) on a
-# copy of its seed corpus, so the corpus in git only changes by hand. A crash, leak, timeout or
+# Trilinos), replays the kept crashes, then fuzzes each reader for FUZZ_SECONDS (default 60; as
+# many readers at once as there are cores) on a copy of its seed corpus, so the corpus in git only changes by hand. A crash, leak, timeout or
 # out-of-memory in hmfnet's code is copied to tests/fuzz/crashes/<reader>/ (replayed by the
 # unit.fuzz_replay CTest once fixed) and fails the job; one inside Debian's libhdf5 is kept in
 # tests/fuzz/libhdf5/ with a warning (not ours to fix; see tests/fuzz/README.md).
@@ -59,13 +59,12 @@ first_frame_outside_runtimes() {
   ' "$1"
 }
 
-status=0
-for reader in "${readers[@]}"; do
+# The settings of one reader, as globals: fuzzer, asan, dict, limits, triage_limits.
+reader_settings() {
+  local reader=$1 max_len=4096 malloc_limit=512
   fuzzer="build-fuzz/bin/fuzz_$reader"
   # Limits: a text read of a few KiB that needs more than 512 MiB in one allocation, 2 GiB in all
   # or 10 s is itself the bug (an absurd allocation or a hang), not a reason to raise them.
-  max_len=4096
-  malloc_limit=512
   asan="$ASAN_OPTIONS"
   if [ "$reader" = network_hdf5 ]; then
     # HDF5 seeds are ~5 KiB files. Debian's libhdf5 (1.10) is outside our control and not
@@ -88,11 +87,16 @@ for reader in "${readers[@]}"; do
   # both limits are equal).
   triage_limits=(-rss_limit_mb=$((2 * (malloc_limit > 1024 ? malloc_limit : 1024))) \
     -malloc_limit_mb=$malloc_limit -timeout=10 -max_len=$max_len)
+}
 
+status=0
+declare -A replay_failed=()
+for reader in "${readers[@]}"; do
+  reader_settings "$reader"
   # 1. The kept crashes must no longer crash (the gcc build replays them too, without sanitizers).
   if compgen -G "tests/fuzz/crashes/$reader/*" > /dev/null; then
     ASAN_OPTIONS="$asan" "$fuzzer" "${limits[@]}" tests/fuzz/crashes/"$reader"/* > "$work/$reader-replay.log" 2>&1 ||
-      { cat "$work/$reader-replay.log"; echo "ci/fuzz.sh: a kept crash of $reader crashes again"; status=1; continue; }
+      { cat "$work/$reader-replay.log"; echo "ci/fuzz.sh: a kept crash of $reader crashes again"; status=1; replay_failed[$reader]=1; continue; }
   fi
 
   # 2. Fuzz a copy of the corpus for a bounded time. HDF5 runs in fork mode and goes on after a
@@ -102,11 +106,20 @@ for reader in "${readers[@]}"; do
   cp tests/fuzz/corpus/"$reader"/* "$work/corpus-$reader"/
   mode=()
   [ "$reader" = network_hdf5 ] && mode=(-fork=1 -ignore_crashes=1 -ignore_ooms=1 -ignore_timeouts=1)
+  #    The readers fuzz side by side, one a core (each fuzzer is one process; the HDF5 one forks
+  #    one child), so the job takes FUZZ_SECONDS per core's share of readers, not per reader.
+  while [ "$(jobs -rp | wc -l)" -ge "$(nproc)" ]; do wait -n || true; done
   echo "ci/fuzz.sh: fuzzing $reader for ${seconds} s"
-  ASAN_OPTIONS="$asan" "$fuzzer" "$work/corpus-$reader" "${dict[@]}" "${limits[@]}" "${mode[@]}" \
+  (ASAN_OPTIONS="$asan" "$fuzzer" "$work/corpus-$reader" "${dict[@]}" "${limits[@]}" "${mode[@]}" \
     -seed="$seed" -max_total_time="$seconds" -print_final_stats=1 \
     -artifact_prefix="$work/artifacts-$reader/" \
-    > "$work/$reader.log" 2>&1 || true
+    > "$work/$reader.log" 2>&1 || true) &
+done
+wait
+
+for reader in "${readers[@]}"; do
+  [ -z "${replay_failed[$reader]:-}" ] || continue
+  reader_settings "$reader"
   grep -E '^(stat::number_of_executed_units|stat::average_exec_per_sec|stat::peak_rss_mb)' \
     "$work/$reader.log" | sed "s/^/  $reader /" || true
   grep -E '^#[0-9]+: cov:' "$work/$reader.log" | tail -n 1 | sed "s/^/  $reader /" || true
