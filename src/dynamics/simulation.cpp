@@ -529,30 +529,37 @@ SimulationResult Run::execute() {
   return m_result;
 }
 
-/// What every rank's trial is made from, the same on all of them: the heaviest rank's work a
-/// step (the step takes as long as that rank's part) and the fewest threads a rank is offered.
+/// What every rank's trial is made from, the same on all of them: whether every rank leaves the
+/// count to the run, the heaviest rank's work a step (the step takes as long as that rank's part)
+/// and the fewest threads a rank is offered.
 struct TrialInputs {
+  bool every_rank_asks;
   std::int64_t work;
   int available;
 };
 
-TrialInputs trial_inputs(std::int64_t work, int available) {
-  // Work a step is far below 2^53: exact in a double.
-  return {static_cast<std::int64_t>(ParallelSession::max(static_cast<double>(work))),
-          -static_cast<int>(ParallelSession::max(-static_cast<double>(available)))};
+/// `asks`: this rank's run takes the default count on the CPU. Collective. A count can differ
+/// between ranks (OMP_NUM_THREADS set for some only: simulate_request.cpp), and a trial on some
+/// ranks only would call its reduction on those alone: then none makes one.
+TrialInputs trial_inputs(bool asks, std::int64_t work, int available) {
+  const auto min_over_ranks = [](double x) { return -ParallelSession::max(-x); };
+  // Work a step and thread counts are far below 2^53: exact in a double.
+  return {min_over_ranks(asks ? 1.0 : 0.0) > 0.0,
+          static_cast<std::int64_t>(ParallelSession::max(static_cast<double>(work))),
+          static_cast<int>(min_over_ranks(static_cast<double>(available)))};
 }
 
 /// The trial of the default thread count (thread_trial.hpp): the rule's count for the inputs, 1
 /// and all the threads offered (not the counts in between), each timed over samples of
 /// k_trial_sample_work units of the rule's work. Every rank makes the same trial from the same
 /// inputs and is told the same times (Run::execute), so the ranks switch counts at the same steps.
-/// None where one thread is offered, on a GPU, where a step is more than a sample's work, or
-/// where the trial's steps would exceed 1 / k_trial_share of the run's (docs/performance.md "The
-/// thread rule measured at run time").
+/// None where a rank was given a count or runs on a GPU, where one thread is offered, where a step
+/// is more than a sample's work, or where the trial's steps would exceed 1 / k_trial_share of the
+/// run's (docs/performance.md "The thread rule measured at run time").
 ThreadTrial thread_trial(const SimulationParameters& params, TrialInputs in) {
   const std::int64_t work = in.work;
   const int available = in.available;
-  if (available < 2 || params.device != "cpu") return {};
+  if (!in.every_rank_asks || available < 2) return {};
   if (work > k_trial_sample_work) return {};
   std::vector<int> candidates{default_threads(work, available)};
   for (const int c : {1, available}) {
@@ -582,10 +589,9 @@ SimulationResult simulate(const DistributedNetwork& network, const std::vector<d
                                       static_cast<std::int64_t>(pass_lanes), force.row_work());
   const int available = omp_get_max_threads();
   const int by_rule = params.threads > 0 ? params.threads : default_threads(work, available);
-  const TrialInputs shared = trial_inputs(work, available);  // collective: on every rank
-  const auto trial = [&](const SimulationParameters& run) {
-    return params.threads > 0 ? ThreadTrial() : thread_trial(run, shared);
-  };
+  const TrialInputs shared =
+      trial_inputs(params.threads == 0 && params.device == "cpu", work, available);
+  const auto trial = [&](const SimulationParameters& run) { return thread_trial(run, shared); };
   const ThreadCountScope threads(by_rule);
   SimulationResult result;
   if (params.K_across_replicas) {

@@ -4,10 +4,10 @@
 // more at those barriers than it computes, and far more when OMP_WAIT_POLICY=PASSIVE puts waiting
 // threads to sleep (a futex wake at every barrier). So the default gives each thread at least
 // work_per_thread(policy) of a step's work: gathers plus each row's own work, times the replicas
-// (step_work; measured: bench/thread_rule.sh, docs/performance.md "Threads"). On one rank, a run
-// long enough then times its first steps at this count, at 1 and at all the threads offered, and
-// goes on at the fastest (thread_trial.hpp): this rule is its first candidate and the whole
-// choice of short runs and of runs over several ranks.
+// (step_work; measured: bench/thread_rule.sh, docs/performance.md "Threads"). A run long enough
+// then times its first steps at this count, at 1 and at all the threads offered, and goes on at
+// the fastest, every rank alike (thread_trial.hpp; simulation.cpp: trial_inputs): this rule is its
+// first candidate and the whole choice of short runs.
 #include <cstdint>
 
 namespace hmfnet {
