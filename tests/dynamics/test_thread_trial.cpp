@@ -212,6 +212,19 @@ void check_trial_keeps_bits(const DistributedNetwork& d, const std::vector<doubl
   }
 }
 
+/// The sparse cases' network: ER N = 2 10^4, mean degree 5, seed 3.
+Network sparse_network() { return erdos_renyi({20000, 5.0 / 20000.0, 3}); }
+
+/// The sparse cases' run: 3 K of 1500 steps each, a transient of 25 steps.
+SimulationParameters sparse_run() {
+  SimulationParameters p = test::short_run();
+  p.h = 0.04;
+  p.duration = 60.0;
+  p.transient = 1.0;
+  p.record_stride = 50;
+  return p;
+}
+
 }  // namespace
 
 TEST_CASE("A sparse run whose default count is tried on its first steps gives one thread's bits",
@@ -219,16 +232,12 @@ TEST_CASE("A sparse run whose default count is tried on its first steps gives on
   // ER N = 2 10^4, degree ~5: ~5 10^5 units of the rule's work a step (10^5 stored entries and
   // 2 10^4 rows of k_row_work), so samples of 8 steps and 2 x 3 x (8 + 1) = 54 trial steps; on 2
   // ranks the heaviest rank's 2.5 10^5 units, samples of 16 steps and 102 trial steps; under 1/40
-  // of the 4500 steps below either way (simulation.cpp: thread_trial). The transient ends after
-  // 25 steps, inside the trial, which then starts again on sampled steps.
-  const Network net = erdos_renyi({20000, 5.0 / 20000.0, 3});
+  // of the 4500 steps of sparse_run() either way (simulation.cpp: thread_trial). The transient ends
+  // after 25 steps, inside the trial, which then starts again on sampled steps.
+  const Network net = sparse_network();
   const DistributedNetwork d(net);
   NetworkForce force(d);
-  SimulationParameters p = test::short_run();
-  p.h = 0.04;
-  p.duration = 60.0;
-  p.transient = 1.0;
-  p.record_stride = 50;
+  SimulationParameters p = sparse_run();
   check_trial_keeps_bits(d, net.degrees(), force, p);
 }
 
@@ -257,15 +266,11 @@ TEST_CASE("A count given to one rank keeps every rank from a trial", "[threads][
   // waiting in another collective. The run of the sparse case above, with a count given to the
   // last rank (as OMP_NUM_THREADS set for one rank only would give it): no rank makes a trial,
   // and the bits are one thread's. On one rank the default count is tried as above.
-  const Network net = erdos_renyi({20000, 5.0 / 20000.0, 3});
+  const Network net = sparse_network();
   const DistributedNetwork d(net);
   NetworkForce force(d);
   const ThreadCountScope offered(2);
-  SimulationParameters p = test::short_run();
-  p.h = 0.04;
-  p.duration = 60.0;
-  p.transient = 1.0;
-  p.record_stride = 50;
+  SimulationParameters p = sparse_run();
   const bool several = ParallelSession::ranks() > 1;
   p.threads = several && ParallelSession::rank() == ParallelSession::ranks() - 1 ? 2 : 0;
   const SimulationResult mixed = simulate(d, net.degrees(), force, p);
@@ -284,15 +289,11 @@ TEST_CASE("A resumed run tries the default count only where its trial fits the s
   // 54 x 40 = 2160 and 102 x 40 = 4080 of the 4500 steps (simulation.cpp: trial_fits). Stopped
   // after 100 steps, 4400 are left and the resumed run tries again; stopped after 3000, 1500 are
   // left, under 40 trials on either, and it keeps the rule's count.
-  const Network net = erdos_renyi({20000, 5.0 / 20000.0, 3});
+  const Network net = sparse_network();
   const DistributedNetwork d(net);
   NetworkForce force(d);
   const ThreadCountScope offered(2);
-  SimulationParameters p = test::short_run();
-  p.h = 0.04;
-  p.duration = 60.0;
-  p.transient = 1.0;
-  p.record_stride = 50;
+  SimulationParameters p = sparse_run();
   p.threads = 0;
   p.checkpoint_path = test::temp_path("hmfnet_test_trial_resume");
   p.checkpoint_seconds = 0.0;
