@@ -1,9 +1,9 @@
 """hmfnet: the Hamiltonian Mean Field model of coupled rotors on networks.
 
 The C++ library behind the `hmfnet` command line, for Python. A network comes from scipy.sparse,
-networkx, a file or a generator; `spectrum`, `theory` and `simulate` run the same code as the
-CLI's subcommands and return what `--json` prints, as a dict (per-K fields and time series as
-numpy arrays). Parameters are the CLI's options as keyword arguments (``K_over_Kc=[1.5, 2]`` is
+networkx, a file or a generator; `spectrum`, `theory` and `simulate` take it, or a file's path as
+the CLI does, run the same code as the CLI's subcommands and return what `--json` prints, as a
+dict (per-K fields and time series as numpy arrays). Parameters are the CLI's options as keyword arguments (``K_over_Kc=[1.5, 2]`` is
 ``--K-over-Kc 1.5,2``), checked by the same checks as the command line: a value out of range
 raises ValueError with the CLI's message, naming the option and its range.
 
@@ -13,6 +13,7 @@ raises ValueError with the CLI's message, naming the option and its range.
     hmfnet.theory(net, sigma0=0.35, K_over_Kc=[1.5, 2.0])["R"]
     run = hmfnet.simulate(net, K_over_Kc=[2.0], T=200, transient=100, seed=1)
 """
+import os as _os
 import warnings as _warnings
 
 import numpy as _np
@@ -29,9 +30,9 @@ __all__ = [
 ]
 
 
-def _warn(net):
+def _warn(net, stacklevel=3):
     for w in net.warnings:
-        _warnings.warn(w, stacklevel=3)
+        _warnings.warn(w, stacklevel=stacklevel)
     return net
 
 
@@ -90,12 +91,29 @@ Network.from_networkx = staticmethod(_from_networkx)
 Network.to_scipy = _to_scipy
 
 
+def _read(path, stacklevel, **options):
+    return _warn(_hmfnet._read_network(_os.fspath(path), _request(
+        "read_network", _hmfnet.ReadRequest(), **options)), stacklevel)
+
+
 def read_network(path, symmetrize=False, index_base=0, nodes=0):
     """Reads a network file (.h5, .mtx, edge list) as the CLI does (FILE:LINE errors raise
     InputError); the options are the CLI's --symmetrize, --index-base and --nodes."""
-    return _warn(_hmfnet._read_network(str(path), _request(
-        "read_network", _hmfnet.ReadRequest(), symmetrize=symmetrize, index_base=index_base,
-        nodes=nodes)))
+    return _read(path, 4, symmetrize=symmetrize, index_base=index_base, nodes=nodes)
+
+
+def _network(where, network):
+    """The network a command runs on: a Network as given, or a file path (str or os.PathLike)
+    read as read_network reads it with its defaults, as the CLI reads its positional argument.
+    Anything else raises TypeError naming the converters, not pybind11's list of overloads."""
+    if isinstance(network, Network):
+        return network
+    if isinstance(network, (str, _os.PathLike)):
+        # Its warnings point at the line that called `where` (_warn, _read, _network, where).
+        return _read(network, 5)
+    raise TypeError(f"{where}: network of type {type(network).__name__} (allowed: an "
+                    "hmfnet.Network or a file path; a scipy matrix: Network.from_scipy(A), a "
+                    "networkx graph: Network.from_networkx(G))")
 
 
 def _per_K_arrays(points, fields):
@@ -105,9 +123,9 @@ def _per_K_arrays(points, fields):
 def spectrum(network, sigma0=None, tolerance=None, lambda2=None):
     """`hmfnet spectrum --json`: lambda, the Perron vector's summaries, rho, G, lambda_2 or its
     bounds, structure, warnings, and K_c when sigma0 is given."""
-    return _hmfnet._spectrum(network, _request("spectrum", _hmfnet.SpectrumRequest(),
-                                               sigma0=sigma0, tolerance=tolerance,
-                                               lambda2=lambda2))
+    request = _request("spectrum", _hmfnet.SpectrumRequest(), sigma0=sigma0, tolerance=tolerance,
+                       lambda2=lambda2)
+    return _hmfnet._spectrum(_network("spectrum", network), request)
 
 
 def theory(network, sigma0, K=None, K_over_Kc=None, momenta=None, tolerance=None):
@@ -116,9 +134,9 @@ def theory(network, sigma0, K=None, K_over_Kc=None, momenta=None, tolerance=None
     fields (K, K_over_Kc, R, R_onset, sigma2, status, linearly_stable, iterations, residual) are
     also returned as numpy arrays at the top level; raises ConvergenceError naming every K
     whose solve failed."""
-    out = _hmfnet._theory(network, _request("theory", _hmfnet.TheoryRequest(), sigma0=sigma0, K=K,
-                                            K_over_Kc=K_over_Kc, momenta=momenta,
-                                            tolerance=tolerance))
+    request = _request("theory", _hmfnet.TheoryRequest(), sigma0=sigma0, K=K, K_over_Kc=K_over_Kc,
+                       momenta=momenta, tolerance=tolerance)
+    out = _hmfnet._theory(_network("theory", network), request)
     for w in out.pop("warnings"):
         _warnings.warn(w, stacklevel=2)
     out.update(_per_K_arrays(out["points"], ["K", "K_over_Kc", "R", "R_onset", "sigma2", "status",
@@ -135,22 +153,24 @@ def simulate(network, *, seed, K=None, K_over_Kc=None, K_sweep=None, sigma0=None
     """`hmfnet simulate --json` with the same options (defaults as the CLI: sigma0 0.35,
     omega 6, h 0.01, T 1000, transient 500, leapfrog), set on a typed request and checked by the
     request's own validation (the CLI's messages); threads=0 is the default count, as leaving
-    it out (the thread rule's, or on a long enough run the count whose first steps ran fastest); device="cuda" steps on a CUDA GPU (the same bits as "cpu", the default). Returns its dict; the per-K fields
-    (K, K_over_Kc, R_mean, R_sem, energy_rel_error_max, momentum_drift) also as numpy arrays,
+    it out (the thread rule's, or on a long enough run the count whose first steps ran fastest);
+    device="cuda" steps on a CUDA GPU (the same bits as "cpu", the default). Returns its dict;
+    the per-K fields (K, K_over_Kc, R_mean, R_sem, energy_rel_error_max, momentum_drift) also as numpy arrays,
     R_mean_replicas / R_sem_replicas as [K x replicas] arrays, and ``timeseries`` with t, K
     [records] and R, energy, momentum [records x replicas]. ``output`` writes the CLI's results
     file (read it with read_run). The GIL is released while it integrates; Ctrl-C stops the run
     at the next record and raises KeyboardInterrupt (with ``checkpoint``, resumable)."""
     if seed is None:
         raise ValueError("--seed is required (an integer 0 <= seed < 2^64)")
-    out = _hmfnet._simulate(network, _request(
+    request = _request(
         "simulate", _hmfnet.SimulateRequest(), seed=seed, K=K, K_over_Kc=K_over_Kc,
         K_sweep=K_sweep, sigma0=sigma0, omega=omega, momenta=momenta, h=h, T=T,
         transient=transient, replicas=replicas, threads=threads, integrator=integrator,
         precision=precision, force=force, output=output, checkpoint=checkpoint, resume=resume,
         node_data=node_data, rotor_node=rotor_node, phase_bins=phase_bins,
         restart_each_K=restart_each_K, K_across_replicas=K_across_replicas,
-        record_stride=record_stride, energy_tolerance=energy_tolerance, device=device))
+        record_stride=record_stride, energy_tolerance=energy_tolerance, device=device)
+    out = _hmfnet._simulate(_network("simulate", network), request)
     points = out.get("points", [])
     out.update(_per_K_arrays(points, ["K", "K_over_Kc", "R_mean", "R_sem", "energy_rel_error_max",
                                       "momentum_drift", "R_mean_replicas", "R_sem_replicas"]))

@@ -219,6 +219,40 @@ def test_options_that_expand_too_far_are_refused_at_once_in_short_numbers(karate
         hmfnet.simulate(karate[0], seed=1, **options)
 
 
+def test_a_file_path_is_read_as_the_cli_reads_it(karate, tmp_path):
+    net, path = karate
+    # The same reader on the same file, then the same code: the same bits, str or pathlib.Path.
+    run = dict(seed=3, K=[1.0], T=2, transient=0, threads=1)
+    read = hmfnet.simulate(hmfnet.read_network(path), **run)
+    for given in (str(path), path):
+        np.testing.assert_array_equal(hmfnet.simulate(given, **run)["R_mean"], read["R_mean"])
+        assert hmfnet.spectrum(given)["lambda"] == hmfnet.spectrum(net)["lambda"]
+        assert hmfnet.theory(given, sigma0=0.35, K=[1.0])["Kc"] == \
+            hmfnet.theory(net, sigma0=0.35, K=[1.0])["Kc"]
+    # The path is the run's recorded input, so an output over it is refused and the file kept.
+    before = path.read_bytes()
+    with pytest.raises(hmfnet.InputError, match="names the same file as the input file"):
+        hmfnet.simulate(path, output=str(path), **run)
+    assert path.read_bytes() == before
+    with pytest.raises(hmfnet.InputError, match="cannot open file for reading"):
+        hmfnet.spectrum(tmp_path / "missing.mtx")
+    # The reader's warnings point at the caller's line, as read_network's do.
+    zeros = tmp_path / "zeros.mtx"
+    zeros.write_text("%%MatrixMarket matrix coordinate real symmetric\n3 3 2\n2 1 1\n3 1 0\n")
+    with pytest.warns(UserWarning, match="1 explicit zero entries dropped") as caught:
+        hmfnet.spectrum(zeros)
+    assert caught[0].filename == __file__
+
+
+@pytest.mark.parametrize("given", [nx.karate_club_graph(), np.eye(3), b"karate.mtx", None])
+def test_anything_else_raises_a_type_error_naming_the_converters(given):
+    for call in (lambda: hmfnet.spectrum(given), lambda: hmfnet.theory(given, sigma0=0.35, K=[1]),
+                 lambda: hmfnet.simulate(given, seed=1, K=[1])):
+        with pytest.raises(TypeError, match=f"network of type {type(given).__name__} .*"
+                           "Network.from_scipy\\(A\\).*Network.from_networkx\\(G\\)"):
+            call()
+
+
 @pytest.mark.parametrize("graph", [nx.path_graph(3), nx.star_graph(2), nx.cycle_graph(3),
                                    nx.path_graph(4), nx.complete_graph(2)])
 def test_networks_of_two_to_four_nodes_work_in_every_command(graph):
