@@ -28,6 +28,17 @@ void require_two_nodes(int n) {
   }
 }
 
+// No generator makes a self-loop or a multi-edge, so no node has more than n - 1 neighbours: a
+// degree above that cannot be drawn (Chung-Lu would cap every probability at 1 and return a
+// mean degree far below the one asked for, without a word).
+void require_degree_at_most_n_minus_one(const char* option, double degree, int n) {
+  if (degree > n - 1) {
+    throw ParameterError(option, "value " + shortest_text(degree) + " is not allowed",
+                         "<= n - 1 = " + std::to_string(n - 1) + " with --n " + std::to_string(n) +
+                             "; a node has at most n - 1 neighbours");
+  }
+}
+
 }  // namespace
 
 void validate(const ErRequest& r) {
@@ -36,6 +47,7 @@ void validate(const ErRequest& r) {
   if (r.mean_degree) require_non_negative("--mean-degree", *r.mean_degree);
   require_one_of("--q", r.q.has_value(), "--mean-degree", r.mean_degree.has_value());
   require_two_nodes(r.n);
+  if (r.mean_degree) require_degree_at_most_n_minus_one("--mean-degree", *r.mean_degree, r.n);
   const bool by_q = r.q.has_value();
   if ((by_q ? *r.q : *r.mean_degree) == 0.0) {
     throw ParameterError(by_q ? "--q" : "--mean-degree", "value 0 is not allowed",
@@ -54,6 +66,8 @@ void validate(const SfRequest& r) {
   require_member("--link", r.link, {"capped", "poisson", "odds"});
   require_one_of("--dmin", r.d_min.has_value(), "--mean-degree", r.mean_degree.has_value());
   require_two_nodes(r.n);
+  if (r.d_min) require_degree_at_most_n_minus_one("--dmin", *r.d_min, r.n);
+  if (r.mean_degree) require_degree_at_most_n_minus_one("--mean-degree", *r.mean_degree, r.n);
 }
 
 void validate(const SbmRequest& r) {
@@ -74,8 +88,8 @@ void validate(const SbmRequest& r) {
 
 void validate(const CompleteRequest& r) { require_in_range("--n", r.n, 2, k_max_nodes); }
 
-// d >= 1 gives n d / 2 edges exactly: a regular draw is never empty. The pairing's own limits
-// (d <= n - 1, n d even) are network/random_regular.hpp's.
+// d >= 1 gives n d / 2 edges exactly: a regular draw is never empty. The pairing's own limit
+// n d even is network/random_regular.hpp's.
 void validate(const RegularRequest& r) {
   require_in_range("--n", r.n, 1, k_max_nodes);
   require_in_range("--degree", r.degree, 0, k_max_nodes - 1);
@@ -86,6 +100,7 @@ void validate(const RegularRequest& r) {
                              "; d = 0 gives no edges, and every reader refuses a network with no "
                              "edges");
   }
+  require_degree_at_most_n_minus_one("--degree", r.degree, r.n);
 }
 
 }  // namespace hmfnet::app

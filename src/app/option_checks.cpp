@@ -1,7 +1,6 @@
 #include "app/option_checks.hpp"
 
-#include <cstdio>
-#include <cstdlib>
+#include <charconv>
 
 #include "core/error.hpp"
 
@@ -17,13 +16,12 @@ void require_number(bool ok, const char* option, double x, const char* allowed) 
 
 }  // namespace
 
+// std::to_chars without a format: the fewest digits that read back to x, in fixed or scientific
+// notation, whichever is shorter (fixed on a tie): "100", not printf's "1e+02" of one digit.
 std::string shortest_text(double x) {
   char text[32];
-  for (int digits = 1; digits <= 17; ++digits) {
-    std::snprintf(text, sizeof text, "%.*g", digits, x);
-    if (!std::isfinite(x) || std::strtod(text, nullptr) == x) break;
-  }
-  return text;
+  const auto end = std::to_chars(text, text + sizeof text, x).ptr;
+  return {text, end};
 }
 
 void require_positive(const char* option, double x) {

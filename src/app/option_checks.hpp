@@ -12,7 +12,7 @@
 
 namespace hmfnet::app {
 
-/// The shortest decimal text that reads back to x ("0.1", "1e-300", "nan").
+/// The shortest decimal text that reads back to x ("0.1", "100", "1e-300", "nan").
 std::string shortest_text(double x);
 
 /// x > 0 and finite.

@@ -31,6 +31,11 @@ TEST_CASE("An Erdos-Renyi request is refused in the CLI's words", "[app]") {
         "--mean-degree: value -1 is not allowed (allowed: >= 0)");
   CHECK(refusal<R>(valid, [](R& r) { r.mean_degree = 3.0; }) == "--q excludes --mean-degree");
   CHECK(refusal<R>(valid, [](R& r) { r.q.reset(); }) == "one of --q or --mean-degree is required");
+  // A node has at most n - 1 neighbours: n - 1 is the complete graph, anything above is refused.
+  CHECK(refusal<R>(valid, [](R& r) { r.q.reset(), r.mean_degree = 49.0; }) == "accepted");
+  CHECK(refusal<R>(valid, [](R& r) { r.q.reset(), r.mean_degree = 49.5; }) ==
+        "--mean-degree: value 49.5 is not allowed (allowed: <= n - 1 = 49 with --n 50; a node has "
+        "at most n - 1 neighbours)");
 }
 
 TEST_CASE("A scale-free request is refused in the CLI's words", "[app]") {
@@ -51,6 +56,14 @@ TEST_CASE("A scale-free request is refused in the CLI's words", "[app]") {
   CHECK(refusal<R>(valid, [](R& r) { r.mean_degree = 4.0; }) == "--dmin excludes --mean-degree");
   CHECK(refusal<R>(valid, [](R& r) { r.d_min.reset(); }) ==
         "one of --dmin or --mean-degree is required");
+  // The capped link would draw a mean degree far below the one asked for, without a word.
+  CHECK(refusal<R>(valid, [](R& r) { r.d_min.reset(), r.mean_degree = 99.0; }) == "accepted");
+  CHECK(refusal<R>(valid, [](R& r) {
+          r.d_min.reset(), r.mean_degree = 100.0;
+        }).rfind("--mean-degree: value 100 is not allowed (allowed: <= n - 1 = 99 with", 0) == 0);
+  CHECK(refusal<R>(valid, [](R& r) {
+          r.d_min = 150.0;
+        }).rfind("--dmin: value 150 is not allowed (allowed: <= n - 1 = 99 with", 0) == 0);
 }
 
 TEST_CASE("Block-model, complete and regular requests are refused in the CLI's words", "[app]") {
@@ -83,4 +96,8 @@ TEST_CASE("Block-model, complete and regular requests are refused in the CLI's w
   CHECK(refusal<G>(regular, [](G& r) {
           r.degree = 0;
         }).rfind("--degree: value 0 is not allowed (allowed: 1 <= d <= n - 1 = 50; d = 0", 0) == 0);
+  CHECK(refusal<G>(regular, [](G& r) { r.degree = 50; }) == "accepted");
+  CHECK(refusal<G>(regular, [](G& r) { r.degree = 51; }) ==
+        "--degree: value 51 is not allowed (allowed: <= n - 1 = 50 with --n 51; a node has at "
+        "most n - 1 neighbours)");
 }

@@ -100,4 +100,10 @@ TEST_CASE("A value is shown as the shortest text that reads back to it", "[app]"
   REQUIRE(app::shortest_text(1e-300) == "1e-300");
   REQUIRE(app::shortest_text(0.30000000000000004) == "0.30000000000000004");
   REQUIRE(app::shortest_text(std::nan("")) == "nan");
+  // Fixed where it is no longer than scientific: a whole number reads as itself.
+  REQUIRE(app::shortest_text(100.0) == "100");
+  REQUIRE(app::shortest_text(10000.0) == "10000");
+  REQUIRE(app::shortest_text(1e6) == "1e+06");
+  REQUIRE(app::shortest_text(1e300) == "1e+300");
+  REQUIRE(app::shortest_text(-HUGE_VAL) == "-inf");
 }
