@@ -17,6 +17,7 @@
 #include "dynamics/interrupt.hpp"
 #include "dynamics/network_force.hpp"
 #include "dynamics/run_file.hpp"
+#include "io/network_file.hpp"
 #include "parallel/parallel_session.hpp"
 #include "spectral/perron.hpp"
 #include "theory/critical_coupling.hpp"
@@ -102,10 +103,16 @@ void prepare_simulate(const SimulateRequest& r) {
     // the run takes fewer when its work per step is small (thread_choice.hpp).
     omp_set_num_threads(std::max(1, omp_get_num_procs() / ParallelSession::ranks()));
   }
-  if (!r.output.empty()) require_writable_destination(r.output);
-  if (!r.checkpoint.empty()) require_writable_destination(r.checkpoint);
+  // The input first: an output over it is the refusal that matters most (its message says so).
   require_distinct_files({{"input", r.input}},
                          {{"--output", r.output}, {"--checkpoint", r.checkpoint}});
+  const auto check_destination = [](const char* role, const std::string& path) {
+    if (path.empty()) return;
+    require_not_a_text_network_name(role, path);
+    require_writable_destination(path);
+  };
+  check_destination("--output", r.output);
+  check_destination("--checkpoint", r.checkpoint);
 }
 
 namespace {

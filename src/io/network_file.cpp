@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <optional>
 
 #include "core/error.hpp"
 #include "io/edge_list.hpp"
@@ -10,7 +11,9 @@
 
 namespace hmfnet {
 
-NetworkFormat format_from_extension(const std::string& path) {
+namespace {
+
+std::optional<NetworkFormat> format_of_extension(const std::string& path) {
   const auto dot = path.find_last_of('.');
   std::string ext = dot == std::string::npos ? std::string() : path.substr(dot + 1);
   std::transform(ext.begin(), ext.end(), ext.begin(),
@@ -19,9 +22,26 @@ NetworkFormat format_from_extension(const std::string& path) {
   if (ext == "h5" || ext == "hdf5") return NetworkFormat::hdf5;
   if (ext == "txt" || ext == "edges" || ext == "el" || ext == "tsv")
     return NetworkFormat::edge_list;
+  return std::nullopt;
+}
+
+}  // namespace
+
+NetworkFormat format_from_extension(const std::string& path) {
+  if (const auto format = format_of_extension(path)) return *format;
   throw InputError(path, 0,
                    "unknown network file extension (use .mtx/.mm, .h5/.hdf5, or "
                    ".txt/.edges/.el/.tsv for edge lists)");
+}
+
+void require_not_a_text_network_name(const std::string& role, const std::string& path) {
+  const auto format = format_of_extension(path);
+  if (format != NetworkFormat::matrix_market && format != NetworkFormat::edge_list) return;
+  throw InputError(
+      path, 0,
+      role + " is written in HDF5, but its extension names " +
+          (format == NetworkFormat::matrix_market ? "a Matrix Market" : "an edge-list") +
+          " network file; choose a name ending in .h5");
 }
 
 ReadResult read_network(const std::string& path, const ReadOptions& options) {

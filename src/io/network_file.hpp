@@ -15,6 +15,11 @@ enum class NetworkFormat { matrix_market, hdf5, edge_list };
 /// Throws InputError naming the file if the extension is not one of the above.
 NetworkFormat format_from_extension(const std::string& path);
 
+/// Throws InputError naming the file and `role` (an option: "--output") where the extension
+/// names a text network format (.mtx/.mm, an edge list) but the command writes HDF5 there: the
+/// file would not be what its name says, and a later read of it as a network fails.
+void require_not_a_text_network_name(const std::string& role, const std::string& path);
+
 /// The stored rows of a network file; a file that holds an implicit structure (the complete
 /// graph) is refused with an InputError naming it: read those with read_network_input.
 ReadResult read_network(const std::string& path, const ReadOptions& options = {});

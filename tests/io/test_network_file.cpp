@@ -33,6 +33,26 @@ TEST_CASE("Network file refuses an unknown or missing extension naming the file 
   require_input_error(e, name, 0, "unknown network file extension");
 }
 
+TEST_CASE("An HDF5 output named like a text network is refused naming the option [extensions]",
+          "[io][network_file]") {
+  for (const std::string name : {"run.h5", "run.HDF5", "run.ck", "run", "dir.mtx/run"}) {
+    INFO(name);
+    CHECK_NOTHROW(require_not_a_text_network_name("--output", name));
+  }
+  const auto row = GENERATE(table<std::string, std::string>({
+      {"run.mtx", "a Matrix Market"},
+      {"run.MM", "a Matrix Market"},
+      {"run.txt", "an edge-list"},
+      {"dir.h5/run.tsv", "an edge-list"},
+  }));
+  const std::string name = std::get<0>(row);
+  const std::string kind = std::get<1>(row);
+  const auto e = input_error_from([&] { require_not_a_text_network_name("--checkpoint", name); });
+  require_input_error(e, name, 0,
+                      "--checkpoint is written in HDF5, but its extension names " + kind +
+                          " network file; choose a name ending in .h5");
+}
+
 TEST_CASE("Network file round trip is exact in every format [weighted and 0/1 with self-loops]",
           "[io][network_file]") {
   const std::string name = GENERATE(as<std::string>{}, "n.mtx", "n.h5", "n.edges");
