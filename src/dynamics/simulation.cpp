@@ -542,11 +542,12 @@ struct TrialInputs {
 /// between ranks (OMP_NUM_THREADS set for some only: simulate_request.cpp), and a trial on some
 /// ranks only would call its reduction on those alone: then none makes one.
 TrialInputs trial_inputs(bool asks, std::int64_t work, int available) {
-  const auto min_over_ranks = [](double x) { return -ParallelSession::max(-x); };
-  // Work a step and thread counts are far below 2^53: exact in a double.
-  return {min_over_ranks(asks ? 1.0 : 0.0) > 0.0,
-          static_cast<std::int64_t>(ParallelSession::max(static_cast<double>(work))),
-          static_cast<int>(min_over_ranks(static_cast<double>(available)))};
+  // One reduction: the mins are maxes of the negated values. Work a step and thread counts are
+  // far below 2^53: exact in a double.
+  std::vector<double> v{asks ? -1.0 : 0.0, static_cast<double>(work),
+                        -static_cast<double>(available)};
+  ParallelSession::max_in_place(v);
+  return {v[0] < 0.0, static_cast<std::int64_t>(v[1]), static_cast<int>(-v[2])};
 }
 
 /// The trial of the default thread count (thread_trial.hpp): the rule's count for the inputs, 1

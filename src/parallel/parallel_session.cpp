@@ -78,6 +78,14 @@ void ParallelSession::sum_in_place(std::vector<double>& values) {
   values.swap(global);
 }
 
+void ParallelSession::max_in_place(std::vector<double>& values) {
+  if (values.empty() || ranks() == 1) return;
+  std::vector<double> global(values.size());
+  Teuchos::reduceAll(*Tpetra::getDefaultComm(), Teuchos::REDUCE_MAX,
+                     static_cast<int>(values.size()), values.data(), global.data());
+  values.swap(global);
+}
+
 void ParallelSession::sum_in_place(std::vector<std::uint64_t>& values) {
   if (values.empty() || ranks() == 1) return;
   static_assert(sizeof(unsigned long long) == sizeof(std::uint64_t));

@@ -39,6 +39,8 @@ class ParallelSession {
   static double max(double local);
   /// Element-wise sum over ranks, in place (one reduction for the whole vector).
   static void sum_in_place(std::vector<double>& values);
+  /// Element-wise max over ranks, in place (one reduction; a min is the max of the negated).
+  static void max_in_place(std::vector<double>& values);
   /// Element-wise sum modulo 2^64 (hash signatures), in place.
   static void sum_in_place(std::vector<std::uint64_t>& values);
 
