@@ -4,17 +4,27 @@ import json
 
 import numpy as np
 
+from ._hmfnet import InputError
+
 
 def read_run(path):
     """{"attributes": {...}, "points": {name: array}, "timeseries": {name: array}} plus, at the
-    top level, the parameters, network and provenance records as dicts. Raises ValueError for a
-    file that is not an hmfnet results file."""
+    top level, the parameters, network and provenance records as dicts. Raises
+    FileNotFoundError for a missing file and hmfnet.InputError (a ValueError) naming the file for
+    one that is not HDF5 or not an hmfnet results file, as the CLI's readers do."""
     import h5py
 
-    with h5py.File(path, "r") as f:
+    try:
+        f = h5py.File(path, "r")
+    except FileNotFoundError:
+        raise
+    except OSError as e:
+        # h5py's message names neither the file nor what was expected of it.
+        raise InputError(f"{path}: not an HDF5 file (or cannot be read): {e}") from None
+    with f:
         attrs = {k: _value(v) for k, v in f.attrs.items()}
         if attrs.get("hmfnet_format") != "simulation":
-            raise ValueError(f"{path}: not an hmfnet results file "
+            raise InputError(f"{path}: not an hmfnet results file "
                              f"(hmfnet_format = {attrs.get('hmfnet_format')!r}, "
                              "expected 'simulation')")
         out = {"attributes": attrs}

@@ -121,8 +121,14 @@ def test_read_run_round_trips_the_cli_file(karate, run_cli, tmp_path):
     assert list(run["points"]["integrator"]) == ["leapfrog", "leapfrog"]
     network_file = tmp_path / "k.h5"
     hmfnet.generate.complete(10).save(str(network_file))
-    with pytest.raises(ValueError, match="not an hmfnet results file"):
+    with pytest.raises(hmfnet.InputError, match="not an hmfnet results file"):
         hmfnet.read_run(network_file)
+    garbage = tmp_path / "garbage.h5"
+    garbage.write_bytes(b"not HDF5")
+    with pytest.raises(hmfnet.InputError, match=f"^{garbage}: not an HDF5 file"):
+        hmfnet.read_run(garbage)
+    with pytest.raises(FileNotFoundError):
+        hmfnet.read_run(tmp_path / "missing.h5")
 
 
 @pytest.mark.parametrize("call, message", [
