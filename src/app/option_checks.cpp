@@ -1,6 +1,7 @@
 #include "app/option_checks.hpp"
 
 #include <charconv>
+#include <cmath>
 
 #include "core/error.hpp"
 
@@ -16,11 +17,15 @@ void require_number(bool ok, const char* option, double x, const char* allowed) 
 
 }  // namespace
 
-// std::to_chars without a format: the fewest digits that read back to x, in fixed or scientific
-// notation, whichever is shorter (fixed on a tie): "100", not printf's "1e+02" of one digit.
+// The fewest digits that read back to x (std::to_chars): in fixed notation for 1e-4 <= |x| < 1e4,
+// where printf's %g reads best ("0.0001", "100"; to_chars alone would pick "1e-04"), elsewhere in
+// whichever of fixed and scientific is shorter ("120000", "1e+06", "1e-300").
 std::string shortest_text(double x) {
   char text[32];
-  const auto end = std::to_chars(text, text + sizeof text, x).ptr;
+  const double size = std::fabs(x);
+  const auto end = size >= 1e-4 && size < 1e4
+                       ? std::to_chars(text, text + sizeof text, x, std::chars_format::fixed).ptr
+                       : std::to_chars(text, text + sizeof text, x).ptr;
   return {text, end};
 }
 

@@ -56,14 +56,16 @@ TEST_CASE("A scale-free request is refused in the CLI's words", "[app]") {
   CHECK(refusal<R>(valid, [](R& r) { r.mean_degree = 4.0; }) == "--dmin excludes --mean-degree");
   CHECK(refusal<R>(valid, [](R& r) { r.d_min.reset(); }) ==
         "one of --dmin or --mean-degree is required");
-  // The capped link would draw a mean degree far below the one asked for, without a word.
+  // A degree above n - 1 cannot be drawn; for --dmin, the targets' mean d_min (alpha - 1) /
+  // (alpha - 2) = 3 d_min at alpha = 2.5 is what must not exceed it.
   CHECK(refusal<R>(valid, [](R& r) { r.d_min.reset(), r.mean_degree = 99.0; }) == "accepted");
   CHECK(refusal<R>(valid, [](R& r) {
           r.d_min.reset(), r.mean_degree = 100.0;
         }).rfind("--mean-degree: value 100 is not allowed (allowed: <= n - 1 = 99 with", 0) == 0);
-  CHECK(refusal<R>(valid, [](R& r) {
-          r.d_min = 150.0;
-        }).rfind("--dmin: value 150 is not allowed (allowed: <= n - 1 = 99 with", 0) == 0);
+  CHECK(refusal<R>(valid, [](R& r) { r.d_min = 33.0; }) == "accepted");
+  CHECK(refusal<R>(valid, [](R& r) { r.d_min = 34.0; }) ==
+        "--dmin: value 34 is not allowed (allowed: a mean target degree of 102 > n - 1 = 99 with "
+        "--n 100 and --alpha 2.5; a node has at most n - 1 neighbours)");
 }
 
 TEST_CASE("Block-model, complete and regular requests are refused in the CLI's words", "[app]") {

@@ -100,9 +100,13 @@ TEST_CASE("A value is shown as the shortest text that reads back to it", "[app]"
   REQUIRE(app::shortest_text(1e-300) == "1e-300");
   REQUIRE(app::shortest_text(0.30000000000000004) == "0.30000000000000004");
   REQUIRE(app::shortest_text(std::nan("")) == "nan");
-  // Fixed where it is no longer than scientific: a whole number reads as itself.
+  // Fixed for 1e-4 <= |x| < 1e4, as printf's %g; elsewhere the shorter notation.
   REQUIRE(app::shortest_text(100.0) == "100");
-  REQUIRE(app::shortest_text(10000.0) == "10000");
+  REQUIRE(app::shortest_text(-0.0001) == "-0.0001");
+  REQUIRE(app::shortest_text(0.0005) == "0.0005");
+  REQUIRE(app::shortest_text(9999.5) == "9999.5");
+  REQUIRE(app::shortest_text(1e-5) == "1e-05");
+  REQUIRE(app::shortest_text(120000.0) == "120000");
   REQUIRE(app::shortest_text(1e6) == "1e+06");
   REQUIRE(app::shortest_text(1e300) == "1e+300");
   REQUIRE(app::shortest_text(-HUGE_VAL) == "-inf");
