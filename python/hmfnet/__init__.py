@@ -3,9 +3,10 @@
 The C++ library behind the `hmfnet` command line, for Python. A network comes from scipy.sparse,
 networkx, a file or a generator; `spectrum`, `theory` and `simulate` take it, or a file's path as
 the CLI does, run the same code as the CLI's subcommands and return what `--json` prints, as a
-dict (per-K fields and time series as numpy arrays). Parameters are the CLI's options as keyword arguments (``K_over_Kc=[1.5, 2]`` is
-``--K-over-Kc 1.5,2``), checked by the same checks as the command line: a value out of range
-raises ValueError with the CLI's message, naming the option and its range.
+dict (per-K fields and time series as numpy arrays). Parameters are the CLI's options as keyword
+arguments (``K_over_Kc=[1.5, 2]`` is ``--K-over-Kc 1.5,2``), checked by the same checks as the
+command line: a value out of range raises ValueError with the CLI's message, naming the option
+and its range.
 
     import networkx as nx, hmfnet
     net = hmfnet.Network.from_networkx(nx.karate_club_graph())
@@ -79,7 +80,8 @@ def _from_networkx(G, weight=None, symmetrize=False):
 
 
 def _to_scipy(self):
-    """The stored rows as a scipy.sparse.csr_matrix (the complete graph held implicitly has none)."""
+    """The stored rows as a scipy.sparse.csr_matrix (the complete graph, held implicitly, has
+    none)."""
     import scipy.sparse as sp
 
     indptr, indices, data = self._csr()
@@ -122,7 +124,8 @@ def _per_K_arrays(points, fields):
 
 def spectrum(network, sigma0=None, tolerance=None, lambda2=None):
     """`hmfnet spectrum --json`: lambda, the Perron vector's summaries, rho, G, lambda_2 or its
-    bounds, structure, warnings, and K_c when sigma0 is given."""
+    bounds, structure, warnings, and K_c when sigma0 is given. ``network``: an hmfnet.Network or
+    a file's path (read as read_network reads it)."""
     request = _request("spectrum", _hmfnet.SpectrumRequest(), sigma0=sigma0, tolerance=tolerance,
                        lambda2=lambda2)
     return _hmfnet._spectrum(_network("spectrum", network), request)
@@ -133,7 +136,7 @@ def theory(network, sigma0, K=None, K_over_Kc=None, momenta=None, tolerance=None
     growth rates and the synchronized state R(K) (eq:rSigmaBesselMain) at each K. The per-K
     fields (K, K_over_Kc, R, R_onset, sigma2, status, linearly_stable, iterations, residual) are
     also returned as numpy arrays at the top level; raises ConvergenceError naming every K
-    whose solve failed."""
+    whose solve failed. ``network``: an hmfnet.Network or a file's path."""
     request = _request("theory", _hmfnet.TheoryRequest(), sigma0=sigma0, K=K, K_over_Kc=K_over_Kc,
                        momenta=momenta, tolerance=tolerance)
     out = _hmfnet._theory(_network("theory", network), request)
@@ -154,10 +157,11 @@ def simulate(network, *, seed, K=None, K_over_Kc=None, K_sweep=None, sigma0=None
     omega 6, h 0.01, T 1000, transient 500, leapfrog), set on a typed request and checked by the
     request's own validation (the CLI's messages); threads=0 is the default count, as leaving
     it out (the thread rule's, or on a long enough run the count whose first steps ran fastest);
-    device="cuda" steps on a CUDA GPU (the same bits as "cpu", the default). Returns its dict;
-    the per-K fields (K, K_over_Kc, R_mean, R_sem, energy_rel_error_max, momentum_drift) also as numpy arrays,
-    R_mean_replicas / R_sem_replicas as [K x replicas] arrays, and ``timeseries`` with t, K
-    [records] and R, energy, momentum [records x replicas]. ``output`` writes the CLI's results
+    device="cuda" steps on a CUDA GPU (the same bits as "cpu", the default). ``network``: an
+    hmfnet.Network or a file's path. Returns its dict; the per-K fields (K, K_over_Kc, R_mean,
+    R_sem, energy_rel_error_max, momentum_drift) also as numpy arrays, R_mean_replicas /
+    R_sem_replicas as [K x replicas] arrays, and ``timeseries`` with t, K [records] and R,
+    energy, momentum [records x replicas]. ``output`` writes the CLI's results
     file (read it with read_run). The GIL is released while it integrates; Ctrl-C stops the run
     at the next record and raises KeyboardInterrupt (with ``checkpoint``, resumable)."""
     if seed is None:

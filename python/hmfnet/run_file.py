@@ -1,6 +1,7 @@
 """Reads a results file written by `hmfnet simulate -o` (docs/simulation_output.md): every
 dataset as a numpy array, the JSON attributes (parameters, network, provenance) as dicts."""
 import json
+import os
 
 import numpy as np
 
@@ -9,18 +10,18 @@ from ._hmfnet import InputError
 
 def read_run(path):
     """{"attributes": {...}, "points": {name: array}, "timeseries": {name: array}} plus, at the
-    top level, the parameters, network and provenance records as dicts. Raises
-    FileNotFoundError for a missing file and hmfnet.InputError (a ValueError) naming the file for
-    one that is not HDF5 or not an hmfnet results file, as the CLI's readers do."""
+    top level, the parameters, network and provenance records as dicts. A file that is missing,
+    not HDF5 or not an hmfnet results file raises hmfnet.InputError (a ValueError) naming it, in
+    the words of the module's network readers."""
     import h5py
 
+    if not os.path.isfile(path):
+        raise InputError(f"{path}: cannot open file for reading")
     try:
         f = h5py.File(path, "r")
-    except FileNotFoundError:
-        raise
-    except OSError as e:
+    except OSError:
         # h5py's message names neither the file nor what was expected of it.
-        raise InputError(f"{path}: not an HDF5 file (or cannot be read): {e}") from None
+        raise InputError(f"{path}: not an HDF5 file (or cannot be read)") from None
     with f:
         attrs = {k: _value(v) for k, v in f.attrs.items()}
         if attrs.get("hmfnet_format") != "simulation":

@@ -127,8 +127,9 @@ def test_read_run_round_trips_the_cli_file(karate, run_cli, tmp_path):
     garbage.write_bytes(b"not HDF5")
     with pytest.raises(hmfnet.InputError, match=f"^{garbage}: not an HDF5 file"):
         hmfnet.read_run(garbage)
-    with pytest.raises(FileNotFoundError):
-        hmfnet.read_run(tmp_path / "missing.h5")
+    for missing in (tmp_path / "missing.h5", tmp_path):
+        with pytest.raises(hmfnet.InputError, match=f"^{missing}: cannot open file for reading"):
+            hmfnet.read_run(missing)
 
 
 @pytest.mark.parametrize("call, message", [
