@@ -29,6 +29,15 @@ void validate_on_command_line(const Requests&... requests) {
   }
 }
 
+// An item of a comma-separated list of numbers. CLI11 drops the empty items between commas, but
+// reads a lone empty value (--K '') as 0, which the range check would then call "value 0".
+const CLI::Validator k_list_item(
+    [](std::string& item) -> std::string {
+      return item.empty() ? "an empty value is not allowed (allowed: numbers, comma separated)"
+                          : "";
+    },
+    "");
+
 // The subcommand's callback: the requests' checks, then the work.
 template <class... Requests>
 std::function<void()> checked(const Run& run, const Requests&... requests) {
@@ -176,9 +185,12 @@ void add_theory_options(CLI::App& app, TheoryFlags& f, const Run& run) {
   c->add_option("--momenta", r.momenta,
                 "Initial momenta: gaussian or waterbag; K_c and gamma are that distribution's "
                 "linear threshold and growth rate");
-  auto* k = c->add_option("--K", r.K, "Couplings K (comma-separated list)")->delimiter(',');
+  auto* k = c->add_option("--K", r.K, "Couplings K (comma-separated list)")
+                ->delimiter(',')
+                ->check(k_list_item);
   auto* kappa = c->add_option("--K-over-Kc", r.K_over_Kc, "Couplings as K/K_c (comma-separated)")
-                    ->delimiter(',');
+                    ->delimiter(',')
+                    ->check(k_list_item);
   k->excludes(kappa);
   c->add_flag("--json", f.json, "One JSON object on stdout");
   c->add_option("--tolerance", r.tolerance,
@@ -200,11 +212,13 @@ void add_simulate_options(CLI::App& app, SimulateFlags& f, const Run& run) {
   c->add_option("--momenta", r.momenta,
                 "Initial momenta: gaussian (the paper) or waterbag (uniform on omega +- "
                 "sqrt(3) sigma0); K_c is that distribution's linear threshold");
-  auto* k = c->add_option("--K", r.K, "Couplings, comma separated")->delimiter(',');
+  auto* k =
+      c->add_option("--K", r.K, "Couplings, comma separated")->delimiter(',')->check(k_list_item);
   auto* kr = c->add_option("--K-over-Kc", r.K_over_Kc,
                            "Couplings as multiples of K_c = 2 sigma0^2 N / lambda (Gaussian), "
                            "6 sigma0^2 N / lambda (water-bag)")
-                 ->delimiter(',');
+                 ->delimiter(',')
+                 ->check(k_list_item);
   auto* ks = c->add_option("--K-sweep", r.sweep, "START:STOP:STEP (the paper's sweep)");
   k->excludes(kr)->excludes(ks);
   kr->excludes(ks);
