@@ -23,6 +23,15 @@ std::vector<char*> program_name_only(int argc, char** argv) {
   return kept;
 }
 
+// Element-wise `op` over ranks, in one reduction; nothing to do on one rank.
+void reduce_in_place(std::vector<double>& values, Teuchos::EReductionType op) {
+  if (values.empty() || Tpetra::getDefaultComm()->getSize() == 1) return;
+  std::vector<double> global(values.size());
+  Teuchos::reduceAll(*Tpetra::getDefaultComm(), op, static_cast<int>(values.size()), values.data(),
+                     global.data());
+  values.swap(global);
+}
+
 }  // namespace
 
 struct ParallelSession::Guard {
@@ -71,19 +80,11 @@ std::vector<std::int64_t> ParallelSession::all_gather(std::int64_t mine) {
 }
 
 void ParallelSession::sum_in_place(std::vector<double>& values) {
-  if (values.empty() || ranks() == 1) return;
-  std::vector<double> global(values.size());
-  Teuchos::reduceAll(*Tpetra::getDefaultComm(), Teuchos::REDUCE_SUM,
-                     static_cast<int>(values.size()), values.data(), global.data());
-  values.swap(global);
+  reduce_in_place(values, Teuchos::REDUCE_SUM);
 }
 
 void ParallelSession::max_in_place(std::vector<double>& values) {
-  if (values.empty() || ranks() == 1) return;
-  std::vector<double> global(values.size());
-  Teuchos::reduceAll(*Tpetra::getDefaultComm(), Teuchos::REDUCE_MAX,
-                     static_cast<int>(values.size()), values.data(), global.data());
-  values.swap(global);
+  reduce_in_place(values, Teuchos::REDUCE_MAX);
 }
 
 void ParallelSession::sum_in_place(std::vector<std::uint64_t>& values) {
