@@ -22,6 +22,21 @@ set(HMFNET_TEST_ENVIRONMENT "OMP_WAIT_POLICY=PASSIVE")
 set(HMFNET_COST_VERIFICATION 100)
 set(HMFNET_COST_CLI 10)
 
+# Links a test binary to Catch2 and to its implementation, which tests/support/catch_session.cpp
+# compiles once for all of them, at -O0 (the runner's own speed does not matter; at -O3 that one
+# file takes 33 s of a 2-core build). The binary's main() calls run_catch_session
+# (support/catch_session.hpp).
+function(hmfnet_link_catch target)
+  if(NOT TARGET hmfnet_catch_session)
+    set(tests_dir ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/../tests)
+    add_library(hmfnet_catch_session STATIC ${tests_dir}/support/catch_session.cpp)
+    target_include_directories(hmfnet_catch_session PUBLIC ${tests_dir})
+    target_link_libraries(hmfnet_catch_session PUBLIC Catch2::Catch2)
+    target_compile_options(hmfnet_catch_session PRIVATE -O0)
+  endif()
+  target_link_libraries(${target} PRIVATE hmfnet_catch_session)
+endfunction()
+
 # LEAK_CHECKED: in an AddressSanitizer build, each of the target's tests runs with LeakSanitizer
 # on (ci/sanitize.sh turns it off for the rest: Open MPI's components leak at exit where no
 # suppression can name them), so the binary need not run a second time, whole, for leaks.

@@ -7,7 +7,6 @@
 //
 // Runs where a CUDA device can run this build's code; elsewhere it prints why and exits with
 // k_skipped, which tests/gpu/CMakeLists.txt declares as CTest's SKIP_RETURN_CODE.
-#define CATCH_CONFIG_RUNNER
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cfloat>
@@ -24,6 +23,7 @@
 #include "dynamics/cuda/device.hpp"
 #include "dynamics/cuda/device_arithmetic_check.hpp"
 #include "dynamics/kernel_arithmetic.hpp"
+#include "support/catch_session.hpp"
 
 #if !defined(HMFNET_HAVE_CUDA)
 #error "hmfnet_cuda's consumers see HMFNET_HAVE_CUDA=1 (src/CMakeLists.txt)"
@@ -130,5 +130,5 @@ int main(int argc, char* argv[]) {
     std::cout << "hmfnet_gpu_tests: skipped: " << why << '\n';
     return k_skipped;
   }
-  return Catch::Session().run(argc, argv);
+  return hmfnet::test::run_catch_session(argc, argv);
 }

@@ -1,3 +1,4 @@
 // Catch2 runner for the tests that need no MPI.
-#define CATCH_CONFIG_MAIN
-#include <catch2/catch.hpp>
+#include "support/catch_session.hpp"
+
+int main(int argc, char** argv) { return hmfnet::test::run_catch_session(argc, argv); }
