@@ -35,6 +35,10 @@ function(hmfnet_link_catch target)
     target_compile_options(hmfnet_catch_session PRIVATE -O0)
   endif()
   target_link_libraries(${target} PRIVATE hmfnet_catch_session)
+  # Every test file includes Catch2 (1.3 s to parse on the AMD EPYC) and most of these; parsed
+  # once per binary instead of once per file.
+  target_precompile_headers(${target} PRIVATE <catch2/catch.hpp> <algorithm> <cmath> <cstdint>
+                            <limits> <random> <string> <vector>)
 endfunction()
 
 # LEAK_CHECKED: in an AddressSanitizer build, each of the target's tests runs with LeakSanitizer
