@@ -3,8 +3,11 @@
 #include <omp.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
+#include <string>
 
 #include "app/option_checks.hpp"
 #include "core/error.hpp"
@@ -63,6 +66,16 @@ void validate(const SimulateRequest& r) {
   require_positive("--T", r.T);
   require_non_negative("--transient", r.transient);
   require_in_range("--replicas", r.replicas, 1, 64);
+  // Replica b draws from seed + b: near 2^64 that would wrap to seed 0 and repeat another run's
+  // replicas without a word.
+  const auto last_first_seed =
+      std::numeric_limits<std::uint64_t>::max() - static_cast<std::uint64_t>(r.replicas - 1);
+  if (r.seed > last_first_seed) {
+    throw ParameterError("--seed", "value " + std::to_string(r.seed) + " is not allowed",
+                         "<= 2^64 - " + std::to_string(r.replicas) + " = " +
+                             std::to_string(last_first_seed) + " with --replicas " +
+                             std::to_string(r.replicas) + "; replica b takes seed + b");
+  }
   if (r.threads != 0) require_in_range("--threads", r.threads, 1, 1024);
   if (r.resume && r.checkpoint.empty()) {
     throw ParameterError("--checkpoint with --resume is required");

@@ -84,6 +84,25 @@ TEST_CASE("Every value out of range is refused in the CLI's words", "[app]") {
   CHECK(refusal([](R& r) { r.precision = "half"; }) ==
         "--precision: half not in {float64,float32}");
   CHECK(refusal([](R& r) { r.transient = 2000.0; }).find("transient") != std::string::npos);
+  CHECK(refusal([](R& r) {
+          r.seed = 18446744073709551615ULL;
+          r.replicas = 2;
+        }) ==
+        "--seed: value 18446744073709551615 is not allowed (allowed: <= 2^64 - 2 = "
+        "18446744073709551614 with --replicas 2; replica b takes seed + b)");
+}
+
+TEST_CASE("The last replica's seed may be 2^64 - 1 and no seed wraps", "[app]") {
+  SimulateRequest r = valid();
+  r.replicas = 64;
+  r.seed = 18446744073709551615ULL - 63;
+  REQUIRE_NOTHROW(app::validate(r));
+  const SimulationParameters p = app::simulation_parameters(r, 1.0);
+  REQUIRE(p.replicas.front().seed == r.seed);
+  REQUIRE(p.replicas.back().seed == 18446744073709551615ULL);
+  r.replicas = 1;
+  r.seed = 18446744073709551615ULL;
+  REQUIRE_NOTHROW(app::validate(r));
 }
 
 TEST_CASE("A sweep expands to its values, and one too long is refused by its count", "[app]") {
