@@ -12,7 +12,8 @@
 #      refuse --device cuda for want of a device);
 #   4. prints the size of what travels (the working tree and build-device/, 64 MiB at most) and
 #      the device tool's call.
-# Rerun it after changing the CUDA sources, the gpu tests or ci/device.
+# Rerun it after changing the CUDA sources, the gpu tests, their Catch2 runner (tests/support/
+# catch_session.*) or ci/device.
 #
 #   bash ci/device_prepare.sh     (where several builds share the cores: under flock, as any build)
 #
@@ -51,7 +52,7 @@ rc=0
 [ "$rc" -eq "$expected" ] || die "$exe exited $rc here, expected $expected (see $logs/gpu-tests-direct.log)"
 cp "$exe" "$scratch/bin/hmfnet_gpu_ensemble_rates" "$scratch/bin/hmfnet_gpu_qss_lifetime" build-device/bin/
 changed=""
-[ -z "$(git status --porcelain -- src tests/gpu ci/device cmake)" ] || changed=" with uncommitted changes"
+[ -z "$(git status --porcelain -- src tests/gpu tests/support ci/device cmake)" ] || changed=" with uncommitted changes"
 printf 'built on %s from %s%s (nvcc %s; %s)\n' "$(date -u +%F)" "$(git rev-parse --short HEAD)" \
   "$changed" "$(nvcc --version | grep -o 'V[0-9.]*' | tail -n 1)" "$(c++ --version | head -n 1)" \
   >build-device/PREPARED

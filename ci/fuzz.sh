@@ -55,7 +55,7 @@ first_frame_outside_runtimes() {
     # The sanitizer interceptors under their plain C names (strdup, memcpy, ... as clang 14
     # prints them): a C function of the harness binary with no source location, i.e. linked in
     # without debug info. Our own code has line tables, so its frames carry file:line instead
-    # of (binary+offset), and its functions are C++ (hmfnet::...).
+    # of (binary+offset) (inlined frames may show unqualified names, never this form).
     / in [A-Za-z_][A-Za-z0-9_]* \(\/[^)]*\/fuzz_[a-z0-9_]+\+0x[0-9a-f]+\)/ { next }
     /\(\/lib\/x86_64-linux-gnu\/libc\.so/ { next }   # the signal trampoline of a timeout report
     { print; exit }

@@ -74,7 +74,8 @@ void validate(const SimulateRequest& r) {
     throw ParameterError("--seed", "value " + std::to_string(r.seed) + " is not allowed",
                          "<= 2^64 - " + std::to_string(r.replicas) + " = " +
                              std::to_string(last_first_seed) + " with --replicas " +
-                             std::to_string(r.replicas) + "; replica b takes seed + b");
+                             std::to_string(r.replicas) +
+                             "; the replicas take seeds seed..seed+B-1");
   }
   if (r.threads != 0) require_in_range("--threads", r.threads, 1, 1024);
   if (r.resume && r.checkpoint.empty()) {

@@ -1,6 +1,7 @@
 // The simulate request's one check (app/simulate_request.hpp): every value out of range is refused
 // in the words the CLI grammar used (tests/cli/option_ranges.txt has the same rows from the
-// command line), whether the request came from the CLI or from Python.
+// command line, but for the --seed that wraps with --replicas: its rows run one replica),
+// whether the request came from the CLI or from Python.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <functional>
@@ -89,7 +90,7 @@ TEST_CASE("Every value out of range is refused in the CLI's words", "[app]") {
           r.replicas = 2;
         }) ==
         "--seed: value 18446744073709551615 is not allowed (allowed: <= 2^64 - 2 = "
-        "18446744073709551614 with --replicas 2; replica b takes seed + b)");
+        "18446744073709551614 with --replicas 2; the replicas take seeds seed..seed+B-1)");
 }
 
 TEST_CASE("The last replica's seed may be 2^64 - 1 and no seed wraps", "[app]") {

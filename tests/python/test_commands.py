@@ -149,6 +149,8 @@ def test_read_run_round_trips_the_cli_file(karate, run_cli, tmp_path):
     (lambda n: hmfnet.simulate(n, seed=None, K=[1]), "--seed is required"),
     (lambda n: hmfnet.simulate(n, seed=-1, K=[1]), "--seed: value -1 is not allowed"),
     (lambda n: hmfnet.simulate(n, seed=2**64, K=[1]), "--seed: value 18446744073709551616"),
+    (lambda n: hmfnet.simulate(n, seed=2**64 - 1, K=[1], replicas=2),
+     "--seed: value 18446744073709551615 is not allowed \\(allowed: <= 2\\^64 - 2"),
     (lambda n: hmfnet.simulate(n, seed=1, K=[1], force="dense"),
      "--force: dense not in \\{auto,sparse,rank-one\\}"),
 ])
