@@ -9,6 +9,7 @@
 //  - SegmentedStep/N/degree/replicas/precision/slice_KiB: LeapFrogStep at 1 thread with the
 //    column segments forced to slices of slice_KiB of the [cos, sin] table (0: unsegmented),
 //    the measurement behind the segment size rule (dynamics/column_segments.hpp);
+//  - SegmentedTeamStep/N/degree/replicas/precision/slice_KiB/threads: the same on `threads`;
 //  - PlainCsrStep: the textbook loop a user would write first: two CSR products over separate
 //    cos and sin arrays, then the kick and drift (1 thread);
 //  - IndexStreamFloor: reading the int32 column array once (the memory floor of any pass);
@@ -65,10 +66,11 @@ void LeapFrogStep(benchmark::State& state) {
 
 // The sparse kernel at a given segment width (src/dynamics/column_segments.hpp), which the force
 // choice leaves to the kernel's own rule: built directly, as the width is what is measured.
-void SegmentedStep(benchmark::State& state) {
+// LeapFrogStep with the segments forced to slices of state.range(4) KiB, on `threads` threads.
+void segmented_steps(benchmark::State& state, int threads) {
   const Network& net = bench::cached_erdos_renyi(static_cast<NodeIndex>(state.range(0)),
                                                  static_cast<double>(state.range(1)));
-  omp_set_num_threads(1);
+  omp_set_num_threads(threads);
   const DistributedNetwork d(net);
   const auto replicas = static_cast<int>(state.range(2));
   const bool f64 = state.range(3) == 0;
@@ -79,6 +81,12 @@ void SegmentedStep(benchmark::State& state) {
   leapfrog_steps(state, d, force, replicas, 6.0, 1.0, 0.01, 50.0, "nnz_steps_per_s",
                  static_cast<double>(net.nnz()));
   state.counters["segments"] = force.segments();
+}
+
+void SegmentedStep(benchmark::State& state) { segmented_steps(state, 1); }
+
+void SegmentedTeamStep(benchmark::State& state) {
+  segmented_steps(state, static_cast<int>(state.range(5)));
 }
 
 void RankOneStep(benchmark::State& state) {
@@ -189,6 +197,13 @@ BENCHMARK(PlainCsrStep)->Args({10000, 100})->Unit(benchmark::kMillisecond);
 // Args: N, mean degree, replicas, precision, slice KiB (0: unsegmented).
 BENCHMARK(SegmentedStep)
     ->ArgsProduct({{1000000}, {100}, {1, 8}, {0, 1}, {0, 512, 1024, 2048, 4096, 16384}})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+// Args: as SegmentedStep's, then threads: the slices against the rule's choice at two threads,
+// where each core holds its L2 slice and the two share the L3 (docs/performance.md, "An Intel
+// Xeon's L3 is no core complex's"; 12 MiB: half a 48 MiB L3 over two threads).
+BENCHMARK(SegmentedTeamStep)
+    ->ArgsProduct({{1000000}, {100}, {1, 8}, {0, 1}, {0, 1024, 4096, 12288}, {2}})
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 // N = 10^4 (its 160 KiB table in L2 whole) cut as N = 10^6 is (16 segments of ~6 entries a

@@ -110,11 +110,21 @@ std::size_t l3_cache_bytes() {
   return bytes;
 }
 
+bool l3_per_core_complex() {
+#if defined(__x86_64__) || defined(__i386__)
+  // CPUID's vendor string, through the compiler's own table (GCC and Clang).
+  static const bool amd = __builtin_cpu_is("amd") != 0;
+  return amd;
+#else
+  return false;
+#endif
+}
+
 CacheSizes this_cpu_caches(int threads) {
   // Threads beyond the CPUs one L3 serves run on other L3s (other core complexes).
   const int sharing = cpu0_l3().sharing_cpus;
   const int share = sharing > 0 ? std::min(threads, sharing) : threads;
-  return CacheSizes{l2_cache_bytes(), l3_cache_bytes(), std::max(share, 1)};
+  return CacheSizes{l2_cache_bytes(), l3_cache_bytes(), std::max(share, 1), l3_per_core_complex()};
 }
 
 }  // namespace hmfnet

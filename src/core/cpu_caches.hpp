@@ -26,13 +26,22 @@ std::size_t l2_cache_bytes();
 /// sysconf(_SC_LEVEL3_CACHE_SIZE), else 0. Read once.
 std::size_t l3_cache_bytes();
 
-/// The caches a kernel's block of data can live in, in bytes (l3 0: none known), and the
-/// threads that share the L3: each may hold a block of its own there.
+/// The caches a kernel's block of data can live in, in bytes (l3 0: none known), the threads
+/// that share the L3 (each may hold a block of its own there), and whether the L3 is a core
+/// complex's own (l3_per_core_complex()).
 struct CacheSizes {
   std::size_t l2 = k_default_l2_bytes;
   std::size_t l3 = 0;
   int l3_threads = 1;
+  bool l3_core_complex = false;
 };
+
+/// Whether this CPU's L3 serves one core complex, close to its few cores, rather than a whole
+/// die: true on AMD (an L3 per core complex since Zen), false elsewhere. The Intel Xeons measured
+/// (a 260 MiB and a 48 MiB L3, a whole socket's on a mesh) served slices of their L3 slower than
+/// slices of the L2 (docs/performance.md, "Segment slices in a core complex's L3" and "An
+/// Intel Xeon's L3 is no core complex's").
+bool l3_per_core_complex();
 
 /// The CPUs of a sysfs CPU list ("0-7,64-71": 16, at most 2^20); 0 where it does not parse.
 int cpu_list_count(const std::string& list);
@@ -50,7 +59,7 @@ SysfsCache sysfs_cache(const std::string& cache_dir, int level);
 
 /// This CPU's (l2_cache_bytes(), l3_cache_bytes()) for a team of `threads`: at least one, at
 /// most the CPUs that share cpu0's L3 (sysfs shared_cpu_list), as threads beyond those run on
-/// other L3s.
+/// other L3s; and l3_per_core_complex().
 CacheSizes this_cpu_caches(int threads);
 
 }  // namespace hmfnet

@@ -69,7 +69,7 @@ void prefer_huge_pages(void* data, std::size_t bytes) {
 }  // namespace
 
 bool slices_in_l3(CacheSizes caches) {
-  return caches.l3 > 2 * caches.l2 && caches.l3 < k_near_l3_max_bytes;
+  return caches.l3_core_complex && caches.l3 > 2 * caches.l2 && caches.l3 < k_near_l3_max_bytes;
 }
 
 std::size_t available_memory_bytes() {

@@ -19,16 +19,19 @@
 
 namespace hmfnet {
 
-/// An L3 smaller than this is taken as a core complex's own, close enough to hold the
-/// segments' slices: the AMD EPYC's 8 MiB (512 KiB L2), where ER N = 10^6, degree 100, float64,
-/// one replica ran 1.8x faster in slices of 4 MiB than of 1 MiB and a table of 0.6-1.3 MB
-/// (N = 10^4, 4 and 8 replicas) 2x faster unsegmented than in L2 slices; the Intel Xeon's 260 MiB
-/// (2 MiB L2), a whole socket's L3, is not, nor the AMD EPYC's socket-wide 64 MiB that glibc
-/// reports where sysfs does not answer: on the Intel Xeon slices of 1 MiB beat 4 MiB ones
-/// (docs/performance.md, "Segment slices in a core complex's L3").
+/// A core complex's L3 (CacheSizes::l3_core_complex) smaller than this is close enough to hold
+/// the segments' slices: the AMD EPYC's 8 MiB (512 KiB L2), where ER N = 10^6, degree 100,
+/// float64, one replica ran 1.8x faster in slices of 4 MiB than of 1 MiB and a table of 0.6-1.3 MB
+/// (N = 10^4, 4 and 8 replicas) 2x faster unsegmented than in L2 slices; not the AMD EPYC's
+/// socket-wide 64 MiB that glibc reports where sysfs does not answer (docs/performance.md,
+/// "Segment slices in a core complex's L3"). An Intel L3 is no core complex's, whatever its size:
+/// on the Intel Xeon with a 48 MiB L3 (1.25 MiB L2) float64 with one replica ran 1.6x faster in
+/// the L2 rule's 1 MiB slices than unblocked in that L3 (docs/performance.md, "An Intel Xeon's
+/// L3 is no core complex's"), as 1 MiB slices beat 4 MiB ones on the one with 260 MiB.
 inline constexpr std::size_t k_near_l3_max_bytes = std::size_t{64} << 20;
 
-/// Whether the slices live in L3 (a near one, more than twice the L2) rather than in L2.
+/// Whether the slices live in L3 (a core complex's, more than twice the L2 and below
+/// k_near_l3_max_bytes) rather than in L2.
 bool slices_in_l3(CacheSizes caches);
 
 /// Segments hold at least this many stored entries per row on average: each row pays, per

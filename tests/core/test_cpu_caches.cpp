@@ -3,6 +3,7 @@
 // and the sizes this machine reports usable (non-zero, a team of at least one).
 #include <catch2/catch.hpp>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "core/cpu_caches.hpp"
@@ -52,6 +53,20 @@ TEST_CASE("This CPU's caches: non-zero L1 and L2, a team of at least one on the 
   CHECK(this_cpu_caches(1).l3_threads == 1);
   CHECK(this_cpu_caches(2).l3_threads >= 1);
   CHECK(this_cpu_caches(2).l3_threads <= 2);
+  CHECK(this_cpu_caches(2).l3_core_complex == l3_per_core_complex());
+}
+
+TEST_CASE("This CPU's L3 is a core complex's exactly where /proc/cpuinfo names AMD",
+          "[cpu_caches]") {
+  // Linux's own reading of CPUID's vendor string, apart from the compiler's.
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  std::string line, vendor;
+  while (vendor.empty() && std::getline(cpuinfo, line)) {
+    if (line.rfind("vendor_id", 0) == 0) vendor = line.substr(line.find(':') + 2);
+  }
+  // No vendor_id (not x86): no AMD L3 either.
+  INFO("vendor_id " << (vendor.empty() ? "(none)" : vendor));
+  CHECK(l3_per_core_complex() == (vendor == "AuthenticAMD"));
 }
 
 TEST_CASE("sysfs cache folders: the data or unified cache of a level, its size and sharers",

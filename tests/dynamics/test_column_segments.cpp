@@ -387,8 +387,8 @@ TEST_CASE("automatic segment width: unblocked while the table fits in L2, half a
 
 TEST_CASE("automatic segment width: slices of half a core complex's L3, where the carry pays",
           "[column_segments]") {
-  // The AMD EPYC's caches: 512 KiB L2, 8 MiB L3.
-  const CacheSizes near{std::size_t{512} << 10, std::size_t{8} << 20};
+  // The AMD EPYC's caches: 512 KiB L2, 8 MiB L3, a core complex's.
+  const CacheSizes near{std::size_t{512} << 10, std::size_t{8} << 20, 1, true};
   REQUIRE(slices_in_l3(near));
   const std::size_t plenty = std::size_t{64} << 30;
   // ER N = 10^4, degree 100: tables of 0.64 MB (float64, 4 replicas) and 1.28 MB (8) beyond the
@@ -408,11 +408,32 @@ TEST_CASE("automatic segment width: slices of half a core complex's L3, where th
   CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 128, near, plenty) ==
         k_unsegmented);
   // An L3 no larger than twice the L2 holds no slice the L2 would not: slices in L2.
-  CHECK_FALSE(slices_in_l3(CacheSizes{std::size_t{1} << 20, std::size_t{2} << 20}));
+  CHECK_FALSE(slices_in_l3(CacheSizes{std::size_t{1} << 20, std::size_t{2} << 20, 1, true}));
   // Two threads share the L3: slices of 2 MiB, 8 segments of 125,000 columns for float64 with one
   // replica.
-  const CacheSizes shared{near.l2, near.l3, 2};
+  const CacheSizes shared{near.l2, near.l3, 2, true};
   CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 16, shared, plenty) == 125'000);
   // glibc's socket-wide 64 MiB, where sysfs does not answer, is not a core complex's L3.
-  CHECK_FALSE(slices_in_l3(CacheSizes{std::size_t{512} << 10, std::size_t{64} << 20}));
+  CHECK_FALSE(slices_in_l3(CacheSizes{std::size_t{512} << 10, std::size_t{64} << 20, 1, true}));
+}
+
+TEST_CASE(
+    "automatic segment width: an L3 that is no core complex's holds no slice, whatever its "
+    "size",
+    "[column_segments]") {
+  // The Intel Xeon's caches with a 48 MiB L3 (1.25 MiB L2): as large as a core complex's could
+  // be, but a whole socket's; its slices live in L2.
+  const CacheSizes socket{std::size_t{1280} << 10, std::size_t{48} << 20, 1, false};
+  CHECK_FALSE(slices_in_l3(socket));
+  CHECK(slices_in_l3(CacheSizes{socket.l2, socket.l3, 1, true}));
+  const std::size_t plenty = std::size_t{64} << 30;
+  // N = 10^6, degree 100, float64, one replica: a 16 MB table, which half that L3 would hold
+  // whole, in slices of 640 KiB, capped at 100 / 6 = 16 segments of 62,500 columns.
+  CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 16, socket, plenty) == 62'500);
+  CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 16,
+                                CacheSizes{socket.l2, socket.l3, 1, true},
+                                plenty) == k_unsegmented);
+  // Two threads: the same slices (each core has its L2).
+  CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 16,
+                                CacheSizes{socket.l2, socket.l3, 2, false}, plenty) == 62'500);
 }
