@@ -64,9 +64,9 @@ void LeapFrogStep(benchmark::State& state) {
                  "nnz_steps_per_s", static_cast<double>(net.nnz()));
 }
 
-// The sparse kernel at a given segment width (src/dynamics/column_segments.hpp), which the force
-// choice leaves to the kernel's own rule: built directly, as the width is what is measured.
-// LeapFrogStep with the segments forced to slices of state.range(4) KiB, on `threads` threads.
+// LeapFrogStep with the segments forced to slices of state.range(4) KiB, on `threads` threads:
+// the sparse kernel built directly at that segment width (src/dynamics/column_segments.hpp), which
+// the force choice leaves to the kernel's own rule, as the width is what is measured.
 void segmented_steps(benchmark::State& state, int threads) {
   const Network& net = bench::cached_erdos_renyi(static_cast<NodeIndex>(state.range(0)),
                                                  static_cast<double>(state.range(1)));

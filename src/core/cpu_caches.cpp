@@ -112,8 +112,12 @@ std::size_t l3_cache_bytes() {
 
 bool l3_per_core_complex() {
 #if defined(__x86_64__) || defined(__i386__)
-  // CPUID's vendor string, through the compiler's own table (GCC and Clang).
-  static const bool amd = __builtin_cpu_is("amd") != 0;
+  // CPUID's vendor string, through the compiler's own table (GCC and Clang); initialised here, so
+  // that a caller during static initialisation reads it too.
+  static const bool amd = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_is("amd") != 0;
+  }();
   return amd;
 #else
   return false;

@@ -37,7 +37,8 @@ struct CacheSizes {
 };
 
 /// Whether this CPU's L3 serves one core complex, close to its few cores, rather than a whole
-/// die: true on AMD (an L3 per core complex since Zen), false elsewhere. The Intel Xeons measured
+/// die: true on AMD (an L3 per core complex since Zen; the earlier AMD parts, whose L3 a die
+/// shares, and Hygon's Zen parts are not told apart), false elsewhere. The Intel Xeons measured
 /// (a 260 MiB and a 48 MiB L3, a whole socket's on a mesh) served slices of their L3 slower than
 /// slices of the L2 (docs/performance.md, "Segment slices in a core complex's L3" and "An
 /// Intel Xeon's L3 is no core complex's").

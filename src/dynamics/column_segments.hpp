@@ -26,8 +26,9 @@ namespace hmfnet {
 /// socket-wide 64 MiB that glibc reports where sysfs does not answer (docs/performance.md,
 /// "Segment slices in a core complex's L3"). An Intel L3 is no core complex's, whatever its size:
 /// on the Intel Xeon with a 48 MiB L3 (1.25 MiB L2) float64 with one replica ran 1.6x faster in
-/// the L2 rule's 1 MiB slices than unblocked in that L3 (docs/performance.md, "An Intel Xeon's
-/// L3 is no core complex's"), as 1 MiB slices beat 4 MiB ones on the one with 260 MiB.
+/// the L2 rule's 1 MiB slices than unblocked in that L3 in one run, 1.26x in the median of three
+/// alternated with the old rule (docs/performance.md, "An Intel Xeon's L3 is no core
+/// complex's"), as 1 MiB slices beat 4 MiB ones on the one with 260 MiB.
 inline constexpr std::size_t k_near_l3_max_bytes = std::size_t{64} << 20;
 
 /// Whether the slices live in L3 (a core complex's, more than twice the L2 and below

@@ -62,7 +62,10 @@ TEST_CASE("This CPU's L3 is a core complex's exactly where /proc/cpuinfo names A
   std::ifstream cpuinfo("/proc/cpuinfo");
   std::string line, vendor;
   while (vendor.empty() && std::getline(cpuinfo, line)) {
-    if (line.rfind("vendor_id", 0) == 0) vendor = line.substr(line.find(':') + 2);
+    const std::size_t colon = line.find(": ");
+    if (line.rfind("vendor_id", 0) == 0 && colon != std::string::npos) {
+      vendor = line.substr(colon + 2);
+    }
   }
   // No vendor_id (not x86): no AMD L3 either.
   INFO("vendor_id " << (vendor.empty() ? "(none)" : vendor));
