@@ -12,6 +12,16 @@ set(HMFNET_MPI_FLAGS --allow-run-as-root --oversubscribe)
 # passively. Tests that need a thread count set it themselves.
 set(HMFNET_TEST_ENVIRONMENT "OMP_WAIT_POLICY=PASSIVE")
 
+# A TIMEOUT guards against hangs, and the unit tests' guards (which ci/sanitize.sh runs) are
+# multiplied by this factor. Under the sanitizers the same code runs 10-20x slower: the dense
+# dispersion test (tests/theory/test_dispersion_relation.cpp, N = 250) takes 6.4 s in Release and
+# 117 s (AMD EPYC) to over 120 s (Intel Xeon) under ASan + UBSan at -O1 beside another test on 2
+# cores, and cli.instruction_sets_agree 136 s of its 180 (AMD EPYC): a guard met by chance.
+set(HMFNET_TIMEOUT_FACTOR 1)
+if(HMFNET_SANITIZE)
+  set(HMFNET_TIMEOUT_FACTOR 3)
+endif()
+
 # CTest starts tests in descending COST (ties in the order declared); a test without one takes
 # the time a previous run stored, and a fresh build (CI's) has none. Without it the verification
 # drivers, declared last and the longest (15-130 s each), started last, and a fresh `ctest -j2`
@@ -47,13 +57,7 @@ endfunction()
 # on (ci/sanitize.sh turns it off for the rest: Open MPI's components leak at exit where no
 # suppression can name them), so the binary need not run a second time, whole, for leaks.
 function(hmfnet_catch_tests target label timeout)
-  # The timeout guards against hangs. Under the sanitizers the same code runs 10-20x slower: the
-  # dense dispersion test (tests/theory/test_dispersion_relation.cpp, N = 250) takes 6.4 s in
-  # Release and 117 s (AMD EPYC) to over 120 s (Intel Xeon) under ASan + UBSan at -O1 beside
-  # another test on 2 cores, so a 120-s guard failed it by chance there.
-  if(HMFNET_SANITIZE)
-    math(EXPR timeout "${timeout} * 3")
-  endif()
+  math(EXPR timeout "${timeout} * ${HMFNET_TIMEOUT_FACTOR}")
   set(leaks)
   if("LEAK_CHECKED" IN_LIST ARGN AND HMFNET_SANITIZE MATCHES "address")
     if(CMAKE_VERSION VERSION_LESS 3.22)  # older CMake ignores the property: no leak check at all
@@ -89,6 +93,7 @@ function(hmfnet_add_mpi_test name nranks timeout)
 endfunction()
 
 function(hmfnet_add_cli_test name label timeout)
+  math(EXPR timeout "${timeout} * ${HMFNET_TIMEOUT_FACTOR}")
   add_test(NAME ${label}.${name} COMMAND ${ARGN})
   set_tests_properties(${label}.${name} PROPERTIES LABELS ${label} TIMEOUT ${timeout}
                        ENVIRONMENT "${HMFNET_TEST_ENVIRONMENT}" COST ${HMFNET_COST_CLI})
