@@ -13,9 +13,12 @@ bash ci/install-deps.sh
 # traces with file:line; measured on two heavy files (Tpetra, Catch2), it compiles in 0.50-0.62
 # of the time of RelWithDebInfo's -O2 -g, which made this job's build ~13 of CI's 45 minutes.
 # No Python module (HMFNET_PYTHON_MODULE=OFF): an instrumented extension cannot load into Debian's
-# uninstrumented interpreter, and its tests run in the main job.
+# uninstrumented interpreter, and its tests run in the main job. No CUDA backend
+# (HMFNET_CUDA=OFF): nvcc's device code is not instrumented, the main job compiles and links it,
+# and this build then checks the other branch, `--device cuda` refused as "built without CUDA"
+# (tests/cli/simulate_outputs.sh).
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
-  -DHMFNET_SANITIZE=address,undefined -DHMFNET_PYTHON_MODULE=OFF \
+  -DHMFNET_SANITIZE=address,undefined -DHMFNET_PYTHON_MODULE=OFF -DHMFNET_CUDA=OFF \
   -DHMFNET_BUILD_BENCH=OFF -DHMFNET_WERROR=OFF > build-asan.log 2>&1 || { cat build-asan.log; exit 1; }
 # The build runs the test binaries to list their Catch2 tests: no leak reports from MPI there.
 export ASAN_OPTIONS="detect_leaks=0"
@@ -31,4 +34,9 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$root/ci/sanitizers/lsan.supp:print_suppressions=0"
 export ASAN_OPTIONS="detect_leaks=0:strict_string_checks=1:check_initialization_order=1"
 cd build-asan
-ctest -L '^unit$' -j "$(nproc)" --output-on-failure --timeout 900
+# One unit test is left to the main job (ci/test.sh runs it): the dense dispersion relation on 8
+# ER networks (tests/theory/test_dispersion_relation.cpp), 128 of this job's 890 test-seconds
+# here (6 s in Release), nearly all in Eigen's complex LU. solve_dispersion itself still runs
+# under the sanitizers, in the complete-graph test beside it (N = 300, 23 s).
+ctest -L '^unit$' -E '^On finite ER networks the full dispersion relation ' -j "$(nproc)" \
+  --output-on-failure --timeout 900
