@@ -36,7 +36,7 @@ export ASAN_OPTIONS="detect_leaks=0:strict_string_checks=1:check_initialization_
 cd build-asan
 # One unit test is left to the main job (ci/test.sh runs it): the dense dispersion relation on 8
 # ER networks (tests/theory/test_dispersion_relation.cpp), 128 of this job's 890 test-seconds
-# here (6 s in Release), nearly all in Eigen's complex LU. solve_dispersion itself still runs
-# under the sanitizers, in the complete-graph test beside it (N = 300, 23 s).
+# (6 s in Release), nearly all in Eigen's complex LU. solve_dispersion, with that LU, still runs
+# under the sanitizers in the complete-graph test beside it (N = 300, 23 s).
 ctest -L '^unit$' -E '^On finite ER networks the full dispersion relation ' -j "$(nproc)" \
   --output-on-failure --timeout 900

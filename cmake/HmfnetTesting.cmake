@@ -16,7 +16,8 @@ set(HMFNET_TEST_ENVIRONMENT "OMP_WAIT_POLICY=PASSIVE")
 # multiplied by this factor. Under the sanitizers the same code runs 10-20x slower: the dense
 # dispersion test (tests/theory/test_dispersion_relation.cpp, N = 250) takes 6.4 s in Release and
 # 117 s (AMD EPYC) to over 120 s (Intel Xeon) under ASan + UBSan at -O1 beside another test on 2
-# cores, and cli.instruction_sets_agree 136 s of its 180 (AMD EPYC): a guard met by chance.
+# cores (ci/sanitize.sh now leaves it to the main job), and cli.instruction_sets_agree 136 s of
+# its 180 (AMD EPYC): a guard met by chance.
 set(HMFNET_TIMEOUT_FACTOR 1)
 if(HMFNET_SANITIZE)
   set(HMFNET_TIMEOUT_FACTOR 3)
