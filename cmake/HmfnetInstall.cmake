@@ -19,7 +19,7 @@ set(HMFNET_PYTHON_INSTALL_DIR lib/python3/dist-packages CACHE STRING
 # hmfnetConfig.cmake finds them again.
 add_library(hmfnet_library INTERFACE)
 target_link_libraries(hmfnet_library INTERFACE hmfnet_dynamics hmfnet_analysis hmfnet_parallel
-                                               hmfnet_core)
+                                               hmfnet_theory hmfnet_core)
 set_target_properties(hmfnet_library PROPERTIES EXPORT_NAME hmfnet)
 add_library(hmfnet::hmfnet ALIAS hmfnet_library)
 
@@ -34,7 +34,8 @@ set(_hmfnet_cuda_target "")
 if(HMFNET_CUDA)
   set(_hmfnet_cuda_target hmfnet_cuda)
 endif()
-install(TARGETS hmfnet_library hmfnet_dynamics hmfnet_analysis hmfnet_parallel hmfnet_core
+install(TARGETS hmfnet_library hmfnet_dynamics hmfnet_analysis hmfnet_parallel hmfnet_theory
+                hmfnet_core
                 hmfnet_version_info hmfnet_warnings hmfnet_commands hmfnet_cli_options hmfnet_app
                 hmfnet_app_requests ${_hmfnet_cuda_target}
         EXPORT hmfnetTargets
