@@ -1,13 +1,19 @@
 #include "parallel/parallel_session.hpp"
 
 #include <sys/resource.h>
+#include <unistd.h>  // environ
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Core.hpp>
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <exception>
+#include <optional>
+#include <set>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 namespace hmfnet {
@@ -42,17 +48,55 @@ bool launched_as_rank() {
   return false;
 }
 
-// A process started without a launcher is an MPI singleton. Open MPI then starts a daemon for it
-// and probes every messaging layer it has (UCX among them) for peers a singleton cannot have:
-// `hmfnet --version` took 0.38 s, 0.07 s without both (Open MPI 4.1, Debian; the bare MPI_Init
-// 0.38 s against 0.04 s), paid by every command and every Python session. Its documented MCA
-// parameters, read from the environment at MPI_Init, skip both: no daemon, the ob1 messaging
-// layer (messages to itself only). A launched rank is left alone, as is any value the user set.
-void prefer_isolated_singleton() {
-  if (launched_as_rank()) return;
-  setenv("OMPI_MCA_ess_singleton_isolated", "1", /*overwrite=*/0);
-  setenv("OMPI_MCA_pml", "ob1", /*overwrite=*/0);
+// A process started without a launcher is an MPI singleton. Open MPI 4 then starts a daemon for
+// it, and its default messaging layer probes UCX for peers a singleton cannot have: `hmfnet
+// --version` took 0.38 s, 0.07 s without both (Open MPI 4.1, Debian; the bare MPI_Init 0.38 s
+// against 0.04 s), paid by every command and every Python session. Two MCA parameters, read
+// from the environment at MPI_Init, skip both: an isolated singleton (no daemon; Open MPI 5 has
+// no such parameter and starts none) and the ob1 messaging layer. A value the user set is kept.
+constexpr std::array<std::pair<const char*, const char*>, 2> k_singleton_parameters{{
+    {"OMPI_MCA_ess_singleton_isolated", "1"},
+    {"OMPI_MCA_pml", "ob1"},
+}};
+
+// The names of the environment's variables that Open MPI and PMIx read (OMPI_, OPAL_, PMIX_).
+std::set<std::string> mpi_variable_names() {
+  std::set<std::string> names;
+  for (char** entry = environ; *entry != nullptr; ++entry) {
+    const std::string_view text(*entry);
+    const std::string_view name = text.substr(0, text.find('='));
+    for (const std::string_view prefix : {"OMPI_", "OPAL_", "PMIX_"}) {
+      if (name.substr(0, prefix.size()) == prefix) names.emplace(name);
+    }
+  }
+  return names;
 }
+
+// A singleton's MPI_Init: the parameters above set for it, and, when it ends, every Open MPI or
+// PMIx variable that was not there before unset, the session's and those Open MPI writes for
+// itself (OMPI_MCA_ess=singleton, OMPI_MCA_pmix=isolated, ...; read at MPI_Init only). Inherited,
+// they broke the processes this one starts: an mpirun started from a Python session gave its
+// ranks a singleton's settings, and they failed at start.
+class SingletonEnvironment {
+ public:
+  SingletonEnvironment() : m_before(mpi_variable_names()) {
+    for (const auto& [name, value] : k_singleton_parameters) {
+      setenv(name, value, /*overwrite=*/0);
+    }
+  }
+  ~SingletonEnvironment() {
+    for (const std::string& name : mpi_variable_names()) {
+      if (m_before.count(name) == 0) unsetenv(name.c_str());
+    }
+  }
+  SingletonEnvironment(const SingletonEnvironment&) = delete;
+  SingletonEnvironment& operator=(const SingletonEnvironment&) = delete;
+
+ private:
+  std::set<std::string> m_before;
+};
+
+bool g_started_by_launcher = false;
 
 }  // namespace
 
@@ -69,9 +113,14 @@ struct ParallelSession::Guard {
 };
 
 ParallelSession::ParallelSession(int* argc, char*** argv) {
-  prefer_isolated_singleton();  // before MPI_Init reads the environment
+  // Before MPI_Init: a singleton's start writes PMIX_RANK into the environment.
+  g_started_by_launcher = launched_as_rank();
+  std::optional<SingletonEnvironment> singleton;
+  if (!g_started_by_launcher) singleton.emplace();
   m_guard = std::make_unique<Guard>(*argc, *argv);
 }
+
+bool ParallelSession::started_by_launcher() { return g_started_by_launcher; }
 
 ParallelSession::~ParallelSession() = default;
 

@@ -34,6 +34,9 @@ class ParallelSession {
   /// This process's rank and the number of ranks in the default communicator.
   static int rank();
   static int ranks();
+  /// Whether a launcher (mpirun, mpiexec, srun) started this process; if not, it runs as an
+  /// isolated singleton (parallel_session.cpp).
+  static bool started_by_launcher();
   /// Sum / max over all ranks (identity on one rank).
   static double sum(double local);
   static double max(double local);

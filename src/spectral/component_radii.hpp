@@ -3,7 +3,7 @@
 // disconnected network the theory's threshold is per component (a component synchronizes iff
 // K lambda_c / (2 N mu) > 1, with the variance mu shared through eq:rSigmaBesselMain's second
 // line), so the self-consistent solver needs them to start only the components that can be
-// coherent (theory/self_consistent.cpp). No Trilinos: used by hmfnet_core.
+// coherent (theory/self_consistent.cpp). No Trilinos: in hmfnet_core, below hmfnet_theory.
 //
 // Method: power iteration on A + I (the shift makes a bipartite component's -lambda_c smaller
 // in magnitude than lambda_c + 1), all components at once with one norm each, from the positive

@@ -1,6 +1,11 @@
 """spectrum, theory and simulate from Python against the CLI on the same network file and
 parameters: the same services (src/app), so the numbers must agree to round-off (the network reaches the CLI through a file, rebuilt row by row: same matrix, same
 order of operations; 1e-12 relative leaves room for nothing but that)."""
+import json
+import os
+import shutil
+import subprocess
+
 import networkx as nx
 import numpy as np
 import pytest
@@ -45,6 +50,25 @@ def test_theory_equals_the_cli(karate, run_cli):
         assert [set(p) for p in py["points"]] == [set(p) for p in cli["points"]]
         assert py["gamma"] == pytest.approx(cli["gamma"], rel=RTOL)
         assert len(py["gamma"]) == 2  # K / K_c = 1.5 and 3 grow, 0.5 does not
+
+
+def test_mpirun_started_from_a_python_session_runs_its_ranks(karate, cli):
+    """The session's MPI start (a singleton) leaves nothing in the environment that a child
+    inherits: Open MPI writes OMPI_MCA_ess=singleton and the like there, and an mpirun started
+    with them gave its ranks a singleton's settings and failed (parallel_session.cpp)."""
+    mpirun = shutil.which("mpirun")
+    if mpirun is None:
+        pytest.skip("no mpirun")
+    net, path = karate
+    py = hmfnet.spectrum(net, sigma0=0.35)  # MPI is running in this process by now
+    flags = ["--oversubscribe"] + (["--allow-run-as-root"] if os.geteuid() == 0 else [])
+    # No env=: the child inherits this process's own environment, as a user's subprocess does.
+    p = subprocess.run([mpirun, "-np", "2", *flags, cli, "spectrum", path, "--json",
+                        "--sigma0", "0.35"], capture_output=True, text=True, timeout=120)
+    assert p.returncode == 0, p.stderr
+    ranks = json.loads(p.stdout)
+    assert ranks["ranks"] == 2
+    assert ranks["lambda"] == pytest.approx(py["lambda"], rel=1e-10)
 
 
 def test_theory_on_the_complete_graph_needs_no_rows():
