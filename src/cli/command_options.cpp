@@ -1,6 +1,7 @@
 #include "cli/command_options.hpp"
 
 #include "app/read_request.hpp"
+#include "cli/number_list.hpp"
 #include "cli/seed_check.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
@@ -28,15 +29,6 @@ void validate_on_command_line(const Requests&... requests) {
     throw CLI::ValidationError(e.what());
   }
 }
-
-// An item of a comma-separated list of numbers. CLI11 drops the empty items between commas, but
-// reads a lone empty value (--K '') as 0, which the range check would then call "value 0".
-const CLI::Validator k_list_item(
-    [](std::string& item) -> std::string {
-      return item.empty() ? "an empty value is not allowed (allowed: numbers, comma separated)"
-                          : "";
-    },
-    "");
 
 // The subcommand's callback: the requests' checks, then the work.
 template <class... Requests>
@@ -185,12 +177,8 @@ void add_theory_options(CLI::App& app, TheoryFlags& f, const Run& run) {
   c->add_option("--momenta", r.momenta,
                 "Initial momenta: gaussian or waterbag; K_c and gamma are that distribution's "
                 "linear threshold and growth rate");
-  auto* k = c->add_option("--K", r.K, "Couplings K (comma-separated list)")
-                ->delimiter(',')
-                ->check(k_list_item);
-  auto* kappa = c->add_option("--K-over-Kc", r.K_over_Kc, "Couplings as K/K_c (comma-separated)")
-                    ->delimiter(',')
-                    ->check(k_list_item);
+  auto* k = add_number_list(c, "--K", r.K, "Couplings K (comma-separated list)");
+  auto* kappa = add_number_list(c, "--K-over-Kc", r.K_over_Kc, "Couplings as K/K_c (comma-separated)");
   k->excludes(kappa);
   c->add_flag("--json", f.json, "One JSON object on stdout");
   c->add_option("--tolerance", r.tolerance,
@@ -212,13 +200,10 @@ void add_simulate_options(CLI::App& app, SimulateFlags& f, const Run& run) {
   c->add_option("--momenta", r.momenta,
                 "Initial momenta: gaussian (the paper) or waterbag (uniform on omega +- "
                 "sqrt(3) sigma0); K_c is that distribution's linear threshold");
-  auto* k =
-      c->add_option("--K", r.K, "Couplings, comma separated")->delimiter(',')->check(k_list_item);
-  auto* kr = c->add_option("--K-over-Kc", r.K_over_Kc,
-                           "Couplings as multiples of K_c = 2 sigma0^2 N / lambda (Gaussian), "
-                           "6 sigma0^2 N / lambda (water-bag)")
-                 ->delimiter(',')
-                 ->check(k_list_item);
+  auto* k = add_number_list(c, "--K", r.K, "Couplings, comma separated");
+  auto* kr = add_number_list(c, "--K-over-Kc", r.K_over_Kc,
+                             "Couplings as multiples of K_c = 2 sigma0^2 N / lambda (Gaussian), "
+                             "6 sigma0^2 N / lambda (water-bag)");
   auto* ks = c->add_option("--K-sweep", r.sweep, "START:STOP:STEP (the paper's sweep)");
   k->excludes(kr)->excludes(ks);
   kr->excludes(ks);
