@@ -25,15 +25,30 @@ std::vector<std::string> items_of(const std::string& value) {
   }
 }
 
-// Why a non-empty `item` is not a number, or "" where it is one (then in `number`): strtod must
-// read all of it ("1x" is not a number) without overflow or underflow (1e999 would become inf).
+// Why `item` is not a number, or "" where it is one (then in `number`): strtod must read all of
+// it ("1x" and "" are not numbers) without overflow or underflow (1e999 would become inf).
 std::string read_number(const std::string& item, double& number) {
+  if (item.empty()) return "is empty (allowed: numbers, comma separated)";
   char* end = nullptr;
   errno = 0;
   number = std::strtod(item.c_str(), &end);
   if (end != item.c_str() + item.size()) return "is not a number";
   if (errno == ERANGE) return "is beyond the range of a double";
   return {};
+}
+
+// The refusal of item i of `value`'s `count` items: the value alone where it is the only item.
+std::string refusal(const std::string& value, std::size_t count, std::size_t i,
+                    const std::string& item, const std::string& why) {
+  if (count == 1 && item.empty()) {
+    return "an empty value is not allowed (allowed: numbers, comma separated)";
+  }
+  std::string text = count == 1 ? "'" + value + "'"
+                                : "item " + std::to_string(i + 1) + " of '" + value + "'";
+  if (count > 1 && !item.empty()) text += " ('" + item + "')";
+  text += ' ';
+  text += why;
+  return text;
 }
 
 }  // namespace
@@ -44,19 +59,10 @@ std::vector<double> parse_number_list(const std::string& option,
   for (const std::string& value : values) {
     const std::vector<std::string> items = items_of(value);
     for (std::size_t i = 0; i < items.size(); ++i) {
-      const std::string place =
-          items.size() == 1 ? "'" + value + "'"
-                            : "item " + std::to_string(i + 1) + " of '" + value + "'";
-      if (items[i].empty()) {
-        throw CLI::ValidationError(
-            option, (items.size() == 1 ? "an empty value is not allowed" : place + " is empty") +
-                        " (allowed: numbers, comma separated)");
-      }
       double number = 0.0;
       const std::string why = read_number(items[i], number);
       if (!why.empty()) {
-        throw CLI::ValidationError(
-            option, place + (items.size() == 1 ? "" : " ('" + items[i] + "')") + " " + why);
+        throw CLI::ValidationError(option, refusal(value, items.size(), i, items[i], why));
       }
       numbers.push_back(number);
     }
