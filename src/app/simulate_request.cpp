@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -17,7 +18,12 @@
 namespace hmfnet::app {
 
 std::vector<double> parse_sweep(const std::string& text) {
+  const auto refuse = [&text](const char* allowed) {
+    throw ParameterError("--K-sweep", "value " + text + " is not allowed", allowed);
+  };
   std::vector<double> v;
+  // Exactly three parts: getline drops a trailing empty one ("1:2:0.5:" would read as 1:2:0.5).
+  if (std::count(text.begin(), text.end(), ':') != 2) refuse("START:STOP:STEP with numbers");
   std::stringstream in(text);
   std::string part;
   while (std::getline(in, part, ':')) {
@@ -28,11 +34,11 @@ std::vector<double> parse_sweep(const std::string& text) {
       used = 0;  // not a number (std::stod throws): refused below with the option's grammar
     }
     if (used == 0 || used != part.size()) {
-      throw ParameterError("--K-sweep", text, "START:STOP:STEP with numbers");
+      refuse("START:STOP:STEP with numbers");
     }
   }
   if (v.size() != 3 || !(v[2] > 0) || !(v[1] >= v[0])) {
-    throw ParameterError("--K-sweep", text, "START:STOP:STEP with STEP > 0 and STOP >= START");
+    refuse("START:STOP:STEP with STEP > 0 and STOP >= START");
   }
   // The count first: a step far below the range would otherwise fill the memory before any
   // check could see the list (0:1:1e-300 asks for 10^300 values).

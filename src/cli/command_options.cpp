@@ -178,7 +178,8 @@ void add_theory_options(CLI::App& app, TheoryFlags& f, const Run& run) {
                 "Initial momenta: gaussian or waterbag; K_c and gamma are that distribution's "
                 "linear threshold and growth rate");
   auto* k = add_number_list(c, "--K", r.K, "Couplings K (comma-separated list)");
-  auto* kappa = add_number_list(c, "--K-over-Kc", r.K_over_Kc, "Couplings as K/K_c (comma-separated)");
+  auto* kappa =
+      add_number_list(c, "--K-over-Kc", r.K_over_Kc, "Couplings as K/K_c (comma-separated)");
   k->excludes(kappa);
   c->add_flag("--json", f.json, "One JSON object on stdout");
   c->add_option("--tolerance", r.tolerance,

@@ -43,8 +43,8 @@ std::string refusal(const std::string& value, std::size_t count, std::size_t i,
   if (count == 1 && item.empty()) {
     return "an empty value is not allowed (allowed: numbers, comma separated)";
   }
-  std::string text = count == 1 ? "'" + value + "'"
-                                : "item " + std::to_string(i + 1) + " of '" + value + "'";
+  std::string text =
+      count == 1 ? "'" + value + "'" : "item " + std::to_string(i + 1) + " of '" + value + "'";
   if (count > 1 && !item.empty()) text += " ('" + item + "')";
   text += ' ';
   text += why;

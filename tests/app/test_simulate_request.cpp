@@ -106,12 +106,15 @@ TEST_CASE("The last replica's seed may be 2^64 - 1 and no seed wraps", "[app]") 
   REQUIRE_NOTHROW(app::validate(r));
 }
 
-TEST_CASE("A sweep expands to its values, and one too long is refused by its count", "[app]") {
+TEST_CASE("A sweep expands to its values; one too long or not of three parts is refused", "[app]") {
   REQUIRE(app::parse_sweep("1:2:0.5") == std::vector<double>{1.0, 1.5, 2.0});
   REQUIRE_THROWS_WITH(app::parse_sweep("0:1:1e-300"),
                       "--K-sweep: 0:1:1e-300 gives 1e+300 K values (allowed: at most 10000 K "
                       "values per run)");
   REQUIRE_THROWS_WITH(app::parse_sweep("1:2"), Catch::Contains("START:STOP:STEP"));
+  // A fourth part, even an empty one, is not the grammar (a trailing ':' once read as 1:2:0.5).
+  REQUIRE_THROWS_WITH(app::parse_sweep("1:2:0.5:"), Catch::Contains("START:STOP:STEP"));
+  REQUIRE_THROWS_WITH(app::parse_sweep("1:2:0.5:1"), Catch::Contains("START:STOP:STEP"));
 }
 
 TEST_CASE("A value is shown as the shortest text that reads back to it", "[app]") {
