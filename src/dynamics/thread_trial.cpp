@@ -27,7 +27,15 @@ int ThreadTrial::threads() const { return m_active ? m_candidates[m_candidate] :
 
 std::int64_t ThreadTrial::chunk_limit() const {
   if (!m_active) return std::numeric_limits<std::int64_t>::max();
-  return m_warm ? k_trial_warm_steps : m_sample_steps - m_steps_in_sample;
+  if (m_warm) return k_trial_warm_steps;
+  const std::int64_t left = m_sample_steps - m_steps_in_sample;
+  if (!may_drop() || m_sample_steps < k_trial_split_steps) return left;
+  return std::min(left, std::max<std::int64_t>(1, m_steps_in_sample));
+}
+
+double ThreadTrial::fastest_before() const {
+  return *std::min_element(m_best.begin(),
+                           m_best.begin() + static_cast<std::ptrdiff_t>(m_candidate));
 }
 
 void ThreadTrial::restart() {
@@ -74,14 +82,15 @@ void ThreadTrial::add(std::int64_t steps, double seconds, std::int64_t kind) {
   }
   m_steps_in_sample += steps;
   m_seconds_in_sample += seconds;
-  if (m_steps_in_sample < m_sample_steps) return;
-  const double per_step = m_seconds_in_sample / static_cast<double>(m_sample_steps);
+  // Past this sum the whole sample's time a step exceeds k_trial_abandon times the fastest: the
+  // candidate is dropped now, with the time a step of the steps it took.
+  const bool past_abandon =
+      may_drop() && m_seconds_in_sample >
+                        k_trial_abandon * fastest_before() * static_cast<double>(m_sample_steps);
+  if (m_steps_in_sample < m_sample_steps && !past_abandon) return;
+  const double per_step = m_seconds_in_sample / static_cast<double>(m_steps_in_sample);
   m_best[m_candidate] = std::min(m_best[m_candidate], per_step);
-  if (m_round == 0 && m_candidate > 0) {
-    const double fastest = *std::min_element(
-        m_best.begin(), m_best.begin() + static_cast<std::ptrdiff_t>(m_candidate));
-    m_dropped[m_candidate] = per_step > k_trial_abandon * fastest;
-  }
+  if (may_drop()) m_dropped[m_candidate] = past_abandon;
   m_steps_in_sample = 0;
   m_seconds_in_sample = 0.0;
   advance();

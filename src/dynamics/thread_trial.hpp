@@ -41,6 +41,16 @@ inline constexpr std::int64_t k_trial_warm_steps = 1;
 /// A candidate this much slower than the fastest before it, in the first round, is dropped:
 /// an all-cores team that sleeps at every barrier may run many times slower than one thread.
 inline constexpr double k_trial_abandon = 2.0;
+/// A first-round sample of at least this many steps, of a candidate that may be dropped, runs in
+/// chunks of 1, 1, 2, 4, ... steps, and the candidate is dropped at the first chunk whose sum
+/// passes k_trial_abandon times the fastest count's whole sample (the decision of the whole
+/// sample, taken early). Without it a count X times slower paid X whole samples: on K_N N = 100
+/// under OMP_WAIT_POLICY=PASSIVE (2 threads ~160x slower a step than 1, 2667-step samples) the
+/// trial's sample at 2 threads cost as much as the run, which then ran at 0.66 of one thread's
+/// rate (the 2-core Intel Xeon family 6 model 106, `bash bench/thread_rule.sh build complete`).
+/// Short samples (steps of 250,000 units and more) stay whole: a second thread's cost is then a
+/// fraction of a step.
+inline constexpr std::int64_t k_trial_split_steps = 16;
 
 class ThreadTrial {
  public:
@@ -71,6 +81,10 @@ class ThreadTrial {
   void restart();
   void advance();
   void finish();
+  /// Whether the sample being taken is the first round's of a candidate that may be dropped.
+  bool may_drop() const { return m_round == 0 && m_candidate > 0; }
+  /// The fastest sample so far of the candidates before the current one, seconds a step.
+  double fastest_before() const;
 
   std::vector<int> m_candidates;
   std::int64_t m_sample_steps = 0;

@@ -162,6 +162,46 @@ TEST_CASE("A count far slower than the fastest so far takes no more samples",
   CHECK(alone.chosen() == 1);
 }
 
+TEST_CASE("A count far slower is dropped as soon as its time passes what its whole sample may take",
+          "[threads][thread_trial]") {
+  // Steps the trial runs at each count, 1 us a step at 1 thread and `slow` us at 2, in the chunks
+  // it asks for.
+  const auto steps_at = [](double slow, ThreadTrial& trial) {
+    std::vector<std::int64_t> steps(3, 0);
+    while (trial.active()) {
+      const int threads = trial.threads();
+      const std::int64_t n = trial.chunk_limit();
+      steps[static_cast<std::size_t>(threads)] += n;
+      trial.add(n, (threads == 1 ? 1e-6 : slow * 1e-6) * static_cast<double>(n), 0);
+    }
+    return steps;
+  };
+  // 160x slower (K_N N = 100 under PASSIVE): dropped after the untimed step and chunks of 1, 1,
+  // 2, 4, 8 steps, whose 16 x 160 us pass the 2 x 1000 x 1 us a whole sample may take.
+  ThreadTrial far({1, 2}, 1000, 3);
+  const std::vector<std::int64_t> far_steps = steps_at(160.0, far);
+  CHECK(far_steps[2] == k_trial_warm_steps + 16);
+  // Count 1: its samples, the untimed step before the first and the one back from 2 threads.
+  CHECK(far_steps[1] == 3 * 1000 + 2 * k_trial_warm_steps);
+  CHECK(far.chosen() == 1);
+  CHECK(far.summary() == "1: 1 us, 2: 160 us -> 1");
+  // The decision is the whole sample's: 1.9x slower takes every sample, 2.1x is dropped only once
+  // its sample is whole (the sum passes 2000 us at its 953rd step, in the chunk that ends it).
+  ThreadTrial near({1, 2}, 1000, 3);
+  CHECK(steps_at(1.9, near)[2] == 3 * (1000 + k_trial_warm_steps));
+  CHECK(near.chosen() == 1);
+  ThreadTrial past({1, 2}, 1000, 3);
+  CHECK(steps_at(2.1, past)[2] == 1000 + k_trial_warm_steps);
+  CHECK(past.chosen() == 1);
+  // A sample shorter than k_trial_split_steps runs whole: its steps are large.
+  ThreadTrial whole({1, 2}, k_trial_split_steps - 1, 1);
+  whole.add(1, 1e-9, 0);
+  CHECK(whole.chunk_limit() == k_trial_split_steps - 1);
+  whole.add(k_trial_split_steps - 1, 1e-6, 0);
+  whole.add(1, 1e-9, 0);
+  CHECK(whole.chunk_limit() == k_trial_split_steps - 1);
+}
+
 TEST_CASE("A trial of one count makes no choice, and bad candidates are refused",
           "[threads][thread_trial]") {
   const ThreadTrial none;
