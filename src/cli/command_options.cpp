@@ -1,5 +1,7 @@
 #include "cli/command_options.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include "app/read_request.hpp"
 #include "cli/number_list.hpp"
 #include "cli/seed_check.hpp"
@@ -17,6 +19,8 @@ void configure_app(CLI::App& app) {
   });
 }
 
+void throw_command_line_error(const std::string& message) { throw CLI::ValidationError(message); }
+
 namespace {
 
 // A value the request's own check refuses is a command-line error like any the grammar finds: the
@@ -28,6 +32,21 @@ void validate_on_command_line(const Requests&... requests) {
   } catch (const ParameterError& e) {
     throw CLI::ValidationError(e.what());
   }
+}
+
+// `name` as a list of numbers read into `target` (cli/number_list.hpp), its refusal a
+// command-line error.
+CLI::Option* add_number_list(CLI::App* command, const std::string& name,
+                             std::vector<double>& target, const std::string& description) {
+  const auto read = [name, &target](const std::vector<std::string>& values) {
+    try {
+      target = parse_number_list(name, values);
+    } catch (const ParameterError& e) {
+      throw CLI::ValidationError(e.what());
+    }
+  };
+  return command->add_option_function<std::vector<std::string>>(name, read, description)
+      ->type_name("FLOAT,...");
 }
 
 // The subcommand's callback: the requests' checks, then the work.

@@ -7,7 +7,6 @@
 // typed request's values are its own check (src/app: validate), run by the subcommand's callback
 // before its work, so the command line and Python refuse a value with the same words; a refusal
 // there is a command-line error like any the grammar finds ("(see --help)", exit code 2).
-#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -19,6 +18,7 @@
 #include "app/simulate_request.hpp"
 #include "app/spectrum_request.hpp"
 #include "app/theory_request.hpp"
+#include "cli/cli_app_fwd.hpp"
 #include "cli/read_flags.hpp"
 
 namespace hmfnet::cli {
@@ -66,6 +66,10 @@ struct DemoFlags {
 
 /// The top-level app: version flag, one subcommand required, one-line errors.
 void configure_app(CLI::App& app);
+
+/// Throws the error main() reports as a command-line error: one line ending in "(see --help)",
+/// exit code 2 (CLI11's ValidationError, so that the commands need not include CLI11).
+[[noreturn]] void throw_command_line_error(const std::string& message);
 
 /// `generate er|sf|sbm|complete|regular`: the typed requests (app/generate_requests.hpp).
 struct GenerateFlags {

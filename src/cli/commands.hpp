@@ -1,8 +1,9 @@
 #pragma once
 // The subcommands of the `hmfnet` CLI. Each add_* registers its options and a callback on the
 // app; errors are thrown (InputError, ParameterError, ConvergenceError) and reported by main().
-#include <CLI/CLI.hpp>
 #include <string>
+
+#include "cli/cli_app_fwd.hpp"
 
 namespace hmfnet::cli {
 

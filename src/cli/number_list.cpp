@@ -3,6 +3,8 @@
 #include <cerrno>
 #include <cstdlib>
 
+#include "core/error.hpp"
+
 namespace hmfnet::cli {
 
 namespace {
@@ -62,24 +64,12 @@ std::vector<double> parse_number_list(const std::string& option,
       double number = 0.0;
       const std::string why = read_number(items[i], number);
       if (!why.empty()) {
-        throw CLI::ValidationError(option, refusal(value, items.size(), i, items[i], why));
+        throw ParameterError(option + ": " + refusal(value, items.size(), i, items[i], why));
       }
       numbers.push_back(number);
     }
   }
   return numbers;
-}
-
-CLI::Option* add_number_list(CLI::App* command, const std::string& name,
-                             std::vector<double>& target, const std::string& description) {
-  return command
-      ->add_option_function<std::vector<std::string>>(
-          name,
-          [name, &target](const std::vector<std::string>& values) {
-            target = parse_number_list(name, values);
-          },
-          description)
-      ->type_name("FLOAT,...");
 }
 
 }  // namespace hmfnet::cli

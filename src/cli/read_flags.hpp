@@ -2,10 +2,10 @@
 // Options every command that reads a network file shares (the typed request,
 // app/read_request.hpp, which Python's read_network sets too), and the read itself (warnings go
 // to stderr on the root rank).
-#include <CLI/CLI.hpp>
 #include <string>
 
 #include "app/read_request.hpp"
+#include "cli/cli_app_fwd.hpp"
 #include "io/network_file.hpp"
 #include "io/read_options.hpp"
 #include "parallel/distributed_read.hpp"

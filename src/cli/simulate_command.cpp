@@ -55,7 +55,7 @@ void run(SimulateFlags& f) {
   try {
     app::prepare_simulate(f.request);  // validate(f.request) first
   } catch (const ParameterError& e) {
-    throw CLI::ValidationError(e.what());
+    throw_command_line_error(e.what());
   }
   DistributedInput input = f.read.read_distributed(f.request.input);
   hooks.before_integration = install_interrupt_handlers;

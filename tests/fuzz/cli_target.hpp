@@ -11,6 +11,7 @@
 // work itself is replaced by those range checks (no network is read and nothing is run). Anything
 // else -- another exception, a sanitizer report, a value out of range that reached the work --
 // aborts with a message.
+#include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
