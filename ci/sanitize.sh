@@ -36,14 +36,15 @@ export ASAN_OPTIONS="detect_leaks=0:strict_string_checks=1:check_initialization_
 cd build-asan
 # Two unit tests are left to the main job (ci/test.sh runs them):
 # - the dense dispersion relation on 8 ER networks (tests/theory/test_dispersion_relation.cpp),
-#   128 of this job's 890 test-seconds (6 s in Release), nearly all in Eigen's complex LU.
+#   128 test-seconds here when measured (6 s in Release), nearly all in Eigen's complex LU.
 #   solve_dispersion, with that LU, still runs under the sanitizers in the complete-graph test
 #   beside it (N = 300, 23 s);
 # - unit.cli.instruction_sets_agree, 94 of this job's 519 test-seconds (14 s in Release): its
-#   property is bits across instruction sets, which the main job checks; the code it reaches runs
-#   here in the unit tests of every set (the [rank_one] tests at 1, 2, 3, 11 and 16 replicas,
-#   whole and partial groups, under the widest set and again in unit.baseline_row_loops and
-#   unit.avx2_rank_one_loops).
+#   property is bits across instruction sets, which the main job checks; the kernels it reaches
+#   run here in the unit tests of each set: the rank-one force at 1, 2, 3, 11 and 16 replicas
+#   (whole and partial groups, [rank_one]) in the widest set and in unit.avx2_rank_one_loops, its
+#   fused pass and the sparse row loops ([rank_one_fused], [network_force], [column_segments]) in
+#   the widest set and in unit.baseline_row_loops.
 ctest -L '^unit$' \
   -E '^(On finite ER networks the full dispersion relation |unit\.cli\.instruction_sets_agree$)' \
   -j "$(nproc)" --output-on-failure --timeout 900

@@ -45,7 +45,10 @@ CLI::Option* add_number_list(CLI::App* command, const std::string& name,
       throw CLI::ValidationError(e.what());
     }
   };
+  // One value an occurrence (`--K 1,2` or `--K 1 --K 2`): with extra arguments allowed, CLI11
+  // would read `--K '[1,,2]'` as a list of its own and drop the empty item before `read` sees it.
   return command->add_option_function<std::vector<std::string>>(name, read, description)
+      ->allow_extra_args(false)
       ->type_name("FLOAT,...");
 }
 

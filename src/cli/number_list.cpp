@@ -1,6 +1,7 @@
 #include "cli/number_list.hpp"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 
 #include "core/error.hpp"
@@ -28,14 +29,16 @@ std::vector<std::string> items_of(const std::string& value) {
 }
 
 // Why `item` is not a number, or "" where it is one (then in `number`): strtod must read all of
-// it ("1x" and "" are not numbers) without overflow or underflow (1e999 would become inf).
+// it ("1x" and "" are not numbers) without overflow (1e999 would become inf). An underflow (glibc
+// sets ERANGE for 1e-310, which a double holds as a subnormal, and for 1e-999, read as 0) is the
+// nearest double, as for any other decimal.
 std::string read_number(const std::string& item, double& number) {
   if (item.empty()) return "is empty (allowed: numbers, comma separated)";
   char* end = nullptr;
   errno = 0;
   number = std::strtod(item.c_str(), &end);
   if (end != item.c_str() + item.size()) return "is not a number";
-  if (errno == ERANGE) return "is beyond the range of a double";
+  if (errno == ERANGE && std::isinf(number)) return "is beyond the range of a double";
   return {};
 }
 

@@ -30,7 +30,13 @@ std::int64_t ThreadTrial::chunk_limit() const {
   if (m_warm) return k_trial_warm_steps;
   const std::int64_t left = m_sample_steps - m_steps_in_sample;
   if (!may_drop() || m_sample_steps < k_trial_split_steps) return left;
-  return std::min(left, std::max<std::int64_t>(1, m_steps_in_sample));
+  if (m_steps_in_sample == 0) return 1;
+  // No slower a step so far than the limit of a drop: the rest as one chunk.
+  if (m_seconds_in_sample <=
+      k_trial_abandon * fastest_before() * static_cast<double>(m_steps_in_sample)) {
+    return left;
+  }
+  return std::min(left, m_steps_in_sample);
 }
 
 double ThreadTrial::fastest_before() const {

@@ -41,15 +41,20 @@ inline constexpr std::int64_t k_trial_warm_steps = 1;
 /// A candidate this much slower than the fastest before it, in the first round, is dropped:
 /// an all-cores team that sleeps at every barrier may run many times slower than one thread.
 inline constexpr double k_trial_abandon = 2.0;
-/// A first-round sample of at least this many steps, of a candidate that may be dropped, runs in
-/// chunks of 1, 1, 2, 4, ... steps, and the candidate is dropped at the first chunk whose sum
-/// passes k_trial_abandon times the fastest count's whole sample (the decision of the whole
-/// sample, taken early). Without it a count X times slower paid X whole samples: on K_N N = 100
-/// under OMP_WAIT_POLICY=PASSIVE (2 threads ~160x slower a step than 1, 2667-step samples) the
-/// trial's sample at 2 threads cost as much as the run, which then ran at 0.66 of one thread's
-/// rate (the 2-core Intel Xeon family 6 model 106, `bash bench/thread_rule.sh build complete`).
-/// Short samples (steps of 250,000 units and more) stay whole: a second thread's cost is then a
-/// fraction of a step.
+/// A first-round sample of at least this many steps, of a candidate that may be dropped, starts
+/// with a chunk of one step. Where that step took more than k_trial_abandon times the fastest
+/// count's step, the sample goes on in chunks of 1, 2, 4, ... steps and the candidate is dropped
+/// at the first chunk whose sum passes k_trial_abandon times the fastest count's whole sample: a
+/// sum that can only grow, so the whole sample would have dropped it too. Otherwise the rest runs
+/// in one chunk, as a whole sample. Each chunk adds its start (the integrator's preparation, a
+/// sleeping team's wake) to the sum, at most ~13 of them: it could drop a count that the whole
+/// sample keeps only where those starts outweigh the fastest count's whole sample. Without the
+/// split a count X times slower paid X of those samples: on K_N N = 100 under
+/// OMP_WAIT_POLICY=PASSIVE (2 threads ~160x slower a step than 1, 2667-step samples) the trial's
+/// sample at 2 threads cost ~0.35 s of a ~2 s run, which then ran at 0.66 of one thread's rate
+/// (the 2-core Intel Xeon family 6 model 106, `bash bench/thread_rule.sh build complete`); now
+/// about 4 of the fastest count's samples at most. Samples under 16 steps (steps of more than
+/// ~270,000 units) stay whole: a second thread's cost is then a fraction of a step.
 inline constexpr std::int64_t k_trial_split_steps = 16;
 
 class ThreadTrial {
@@ -63,7 +68,8 @@ class ThreadTrial {
   /// The count the next chunk runs at (while active).
   int threads() const;
   /// Steps the next chunk may take: k_trial_warm_steps for the untimed step before a sample, else
-  /// what is left of the current sample (no limit when inactive).
+  /// what is left of the current sample, or less where a first-round sample is split
+  /// (k_trial_split_steps); no limit when inactive.
   std::int64_t chunk_limit() const;
   /// A chunk of `steps` (<= chunk_limit()) that took `seconds` at threads(); `kind`: its cost
   /// class (steps of one kind cost the same at a given count).
@@ -73,8 +79,9 @@ class ThreadTrial {
   std::int64_t steps() const;
   /// The count chosen once the trial ended; the first candidate before that or if it gave up.
   int chosen() const { return m_chosen; }
-  /// Each candidate's fastest sample in microseconds a step, and the choice: "1: 81.2 us, 2:
-  /// 47.9 us -> 2", or why there was no choice; empty where no trial was made.
+  /// Each candidate's fastest sample in microseconds a step (of a candidate dropped before its
+  /// first sample ended, the steps it took), and the choice: "1: 81.2 us, 2: 47.9 us -> 2", or why
+  /// there was no choice; empty where no trial was made.
   std::string summary() const;
 
  private:
@@ -100,7 +107,7 @@ class ThreadTrial {
   std::vector<bool> m_dropped;  ///< candidates that take no more samples
   std::int64_t m_steps_in_sample = 0;
   double m_seconds_in_sample = 0.0;
-  /// Each candidate's fastest sample, seconds a step.
+  /// Each candidate's fastest sample, seconds a step (a dropped one's: the steps it took).
   std::vector<double> m_best;
   std::string m_gave_up;  ///< why the trial ended without a choice
 };

@@ -106,7 +106,8 @@ TEST_CASE("The last replica's seed may be 2^64 - 1 and no seed wraps", "[app]") 
   REQUIRE_NOTHROW(app::validate(r));
 }
 
-TEST_CASE("A sweep expands to its values; one too long or not of three parts is refused", "[app]") {
+TEST_CASE("A sweep expands to its values, and one too long or not of three parts is refused",
+          "[app]") {
   REQUIRE(app::parse_sweep("1:2:0.5") == std::vector<double>{1.0, 1.5, 2.0});
   REQUIRE_THROWS_WITH(app::parse_sweep("0:1:1e-300"),
                       "--K-sweep: 0:1:1e-300 gives 1e+300 K values (allowed: at most 10000 K "

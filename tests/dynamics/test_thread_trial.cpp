@@ -185,21 +185,44 @@ TEST_CASE("A count far slower is dropped as soon as its time passes what its who
   CHECK(far_steps[1] == 3 * 1000 + 2 * k_trial_warm_steps);
   CHECK(far.chosen() == 1);
   CHECK(far.summary() == "1: 1 us, 2: 160 us -> 1");
-  // The decision is the whole sample's: 1.9x slower takes every sample, 2.1x is dropped only once
-  // its sample is whole (the sum passes 2000 us at its 953rd step, in the chunk that ends it).
+  // The decision is the whole sample's: 1.9x slower takes every sample (its first step within the
+  // limit, the rest in one chunk), 2.1x is dropped only once its sample is whole (the sum passes
+  // 2000 us at its 953rd step, in the chunk that ends it).
   ThreadTrial near({1, 2}, 1000, 3);
   CHECK(steps_at(1.9, near)[2] == 3 * (1000 + k_trial_warm_steps));
   CHECK(near.chosen() == 1);
   ThreadTrial past({1, 2}, 1000, 3);
   CHECK(steps_at(2.1, past)[2] == 1000 + k_trial_warm_steps);
   CHECK(past.chosen() == 1);
-  // A sample shorter than k_trial_split_steps runs whole: its steps are large.
-  ThreadTrial whole({1, 2}, k_trial_split_steps - 1, 1);
-  whole.add(1, 1e-9, 0);
-  CHECK(whole.chunk_limit() == k_trial_split_steps - 1);
-  whole.add(k_trial_split_steps - 1, 1e-6, 0);
-  whole.add(1, 1e-9, 0);
-  CHECK(whole.chunk_limit() == k_trial_split_steps - 1);
+  // A count whose first step is slow (a sleeping team's wake) and the rest fast takes its whole
+  // sample, in doubling chunks, and is chosen.
+  ThreadTrial woken({1, 2}, 1000, 1);
+  woken.add(1, 1e-9, 0);
+  woken.add(1000, 1e-3, 0);  // count 1: 1 us a step
+  woken.add(1, 1e-9, 0);     // count 2's untimed step
+  CHECK(woken.chunk_limit() == 1);
+  woken.add(1, 50e-6, 0);  // 50 us: past 2 x 1 us, so the sample is split
+  // Split while the steps so far are past the limit (50 + 0.5 k us against 2 k us), then the rest
+  // in one chunk once they are within it (at 64 steps: 81.5 against 128 us).
+  std::vector<std::int64_t> chunks;
+  while (woken.active()) {
+    const std::int64_t n = woken.chunk_limit();
+    chunks.push_back(n);
+    woken.add(n, 0.5e-6 * static_cast<double>(n), 0);
+  }
+  CHECK(chunks == std::vector<std::int64_t>{1, 2, 4, 8, 16, 32, 936});
+  CHECK(woken.chosen() == 2);
+  // The first chunk of a sample of k_trial_split_steps steps is one step; a sample shorter than
+  // that runs whole (its steps are large), at the first count as at the others.
+  for (const std::int64_t sample : {k_trial_split_steps, k_trial_split_steps - 1}) {
+    ThreadTrial trial({1, 2}, sample, 1);
+    trial.add(1, 1e-9, 0);
+    CHECK(trial.chunk_limit() == sample);
+    trial.add(sample, 1e-6, 0);
+    trial.add(1, 1e-9, 0);
+    CHECK(trial.threads() == 2);
+    CHECK(trial.chunk_limit() == (sample == k_trial_split_steps ? 1 : sample));
+  }
 }
 
 TEST_CASE("A trial of one count makes no choice, and bad candidates are refused",

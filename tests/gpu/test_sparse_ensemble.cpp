@@ -111,7 +111,7 @@ TEST_CASE("float64 device steps are the CPU's bits over 100 leap-frog steps, a K
   CHECK(differing(p, host.p) == 0);
 }
 
-TEST_CASE("float32 device steps are the CPU's float32 bits; yoshida4 and blanes_moan too",
+TEST_CASE("float32 device steps are the CPU's float32 bits, and yoshida4 and blanes_moan too",
           "[gpu][sparse]") {
   std::vector<double> theta, p;
   device_run(cuda::DevicePrecision::float32, 256, leap_frog_coefficients(), 0.05, 100, theta, p);
@@ -231,7 +231,7 @@ TEST_CASE(
   }
 }
 
-TEST_CASE("the energy error falls as h^2 (leap-frog) and h^4 (yoshida4); float32 against float64",
+TEST_CASE("the energy error falls as h^2 (leap-frog) and h^4 (yoshida4), float32 against float64",
           "[gpu][sparse]") {
   // Halving h divides a p-th order method's error by 2^p once h is in the asymptotic range.
   // Measured with the host stepper (the same arithmetic): leap-frog 3.763e-7 -> 9.408e-8 (order
