@@ -23,15 +23,10 @@ void throw_command_line_error(const std::string& message) { throw CLI::Validatio
 
 namespace {
 
-// A value the request's own check refuses is a command-line error like any the grammar finds: the
-// same one line ending in "(see --help)" and exit code 2 (main.cpp).
+// The requests' own checks, a refusal a command-line error (main.cpp: exit code 2).
 template <class... Requests>
 void validate_on_command_line(const Requests&... requests) {
-  try {
-    (app::validate(requests), ...);
-  } catch (const ParameterError& e) {
-    throw CLI::ValidationError(e.what());
-  }
+  as_command_line_error([&] { (app::validate(requests), ...); });
 }
 
 // `name` as a list of numbers read into `target` (cli/number_list.hpp), its refusal a
@@ -39,11 +34,7 @@ void validate_on_command_line(const Requests&... requests) {
 CLI::Option* add_number_list(CLI::App* command, const std::string& name,
                              std::vector<double>& target, const std::string& description) {
   const auto read = [name, &target](const std::vector<std::string>& values) {
-    try {
-      target = parse_number_list(name, values);
-    } catch (const ParameterError& e) {
-      throw CLI::ValidationError(e.what());
-    }
+    as_command_line_error([&] { target = parse_number_list(name, values); });
   };
   // One value an occurrence (`--K 1,2` or `--K 1 --K 2`): with extra arguments allowed, CLI11
   // would read `--K '[1,,2]'` as a list of its own and drop the empty item before `read` sees it.

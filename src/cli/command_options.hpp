@@ -20,6 +20,7 @@
 #include "app/theory_request.hpp"
 #include "cli/cli_app_fwd.hpp"
 #include "cli/read_flags.hpp"
+#include "core/error.hpp"
 
 namespace hmfnet::cli {
 
@@ -70,6 +71,17 @@ void configure_app(CLI::App& app);
 /// Throws the error main() reports as a command-line error: one line ending in "(see --help)",
 /// exit code 2 (CLI11's ValidationError, so that the commands need not include CLI11).
 [[noreturn]] void throw_command_line_error(const std::string& message);
+
+/// Runs `work`; a value it refuses (ParameterError) is a command-line error like any the grammar
+/// finds (throw_command_line_error), in the request's own words.
+template <class Work>
+void as_command_line_error(Work&& work) {
+  try {
+    work();
+  } catch (const ParameterError& e) {
+    throw_command_line_error(e.what());
+  }
+}
 
 /// `generate er|sf|sbm|complete|regular`: the typed requests (app/generate_requests.hpp).
 struct GenerateFlags {

@@ -52,11 +52,7 @@ void run(SimulateFlags& f) {
   f.request.progress = !f.quiet && !f.json && ::isatty(2);
   // A value out of range is a command-line error like any the grammar finds: the same one line
   // ending in "(see --help)" and exit code 2 (main.cpp), from the request's own check.
-  try {
-    app::prepare_simulate(f.request);  // validate(f.request) first
-  } catch (const ParameterError& e) {
-    throw_command_line_error(e.what());
-  }
+  as_command_line_error([&] { app::prepare_simulate(f.request); });  // validate(f.request) first
   DistributedInput input = f.read.read_distributed(f.request.input);
   hooks.before_integration = install_interrupt_handlers;
   const app::SimulateOutcome o = app::simulate(f.request, std::move(input), hooks);
