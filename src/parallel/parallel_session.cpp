@@ -53,10 +53,16 @@ bool launched_as_rank() {
 // --version` took 0.38 s, 0.07 s without both (Open MPI 4.1, Debian; the bare MPI_Init 0.38 s
 // against 0.04 s), paid by every command and every Python session. Two MCA parameters, read
 // from the environment at MPI_Init, skip both: an isolated singleton (no daemon; Open MPI 5 has
-// no such parameter and starts none) and the ob1 messaging layer. A value the user set is kept.
-constexpr std::array<std::pair<const char*, const char*>, 2> k_singleton_parameters{{
+// no such parameter and starts none) and the ob1 messaging layer. A third keeps it out of the
+// file system: every isolated singleton names itself [0,1],0 and so shares one session directory,
+// TMPDIR/ompi.HOST.UID/jf.0/1/0, and one ending removes jf.0 while another creates it ("A call to
+// mkdir was unable to create the desired directory": 6 of 300 `hmfnet --version` started 8 at a
+// time, none with the parameter). A singleton has no peer to share memory with, so it needs none.
+// A value the user set is kept.
+constexpr std::array<std::pair<const char*, const char*>, 3> k_singleton_parameters{{
     {"OMPI_MCA_ess_singleton_isolated", "1"},
     {"OMPI_MCA_pml", "ob1"},
+    {"OMPI_MCA_orte_create_session_dirs", "0"},
 }};
 
 // The names of the environment's variables that Open MPI and PMIx read (OMPI_, OPAL_, PMIX_).
