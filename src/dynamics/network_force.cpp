@@ -23,7 +23,7 @@ namespace {
 
 // The baseline row loop: x86-64 baseline instructions (SSE2), for every replica count where the
 // wide loops of wide_rows.hpp do not serve (HMFNET_SINCOS_ISA=baseline, a CPU without AVX2,
-// float32 B = 2, counts other than 2, 4, 8); the same bits as they.
+// float32 B = 2, the segments' runs at counts other than 2, 4, 8); the same bits as they.
 // Replica count B fixed at compile time so the inner loops unroll and vectorise; `runtime_b`
 // serves other counts. Weighted is a template flag so the 0/1 loop reads no values.
 // Each replica is summed exactly as rows_kernel_single sums one, so B replicas in one pass equal
@@ -240,7 +240,7 @@ void dispatch(const RowKernelArgs<T>& a, NodeIndex rows, int b) {
 template <typename T>
 void run_kernel(const RowKernelArgs<T>& a, NodeIndex rows, int b) {
   const SincosIsa isa = sincos_isa();
-  if (wide_rows_serve<T>(b, isa)) {
+  if (wide_rows_serve<T>(b, isa) || wide_groups_serve<T>(b, isa)) {
     wide_rows(a, rows, b, isa);
     return;
   }

@@ -33,15 +33,15 @@ constexpr int baseline_walk_partials(std::size_t record_bytes) {
   return record_bytes <= 32 ? 4 : record_bytes <= 64 ? 2 : 1;
 }
 
-/// Row r's outputs from its four partial sums of every replica (partial j of value v at
-/// p[j * stride + v]), combined as (s0 + s1) + (s2 + s3) in T: every row loop ends here, so
-/// they agree bit for bit whenever their partials do.
+/// Row r's outputs for replicas [first, first + count) of the run's nb from their four partial
+/// sums (partial j of the group's value v at p[j * stride + v]), combined as (s0 + s1) + (s2 +
+/// s3) in T: every row loop ends here, so they agree bit for bit whenever their partials do.
 template <typename T>
-inline void finish_row(const RowKernelArgs<T>& a, NodeIndex r, const T* p, std::size_t stride,
-                       int nb) {
-  const double* o = a.owned_cs + 2 * static_cast<std::ptrdiff_t>(r) * nb;
-  const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(r) * nb;
-  for (int b = 0; b < nb; ++b) {
+inline void finish_replicas(const RowKernelArgs<T>& a, NodeIndex r, const T* p, std::size_t stride,
+                            int nb, int first, int count) {
+  const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(r) * nb + first;
+  const double* o = a.owned_cs + 2 * base;
+  for (int b = 0; b < count; ++b) {
     const std::size_t re = 2 * static_cast<std::size_t>(b), im = re + 1;
     const double yc = (p[re] + p[stride + re]) + (p[2 * stride + re] + p[3 * stride + re]);
     const double ys =
@@ -53,6 +53,13 @@ inline void finish_row(const RowKernelArgs<T>& a, NodeIndex r, const T* p, std::
     a.terms[2 * (base + b)] = std::sqrt(yc * yc + ys * ys);
     a.terms[2 * (base + b) + 1] = c * yc + s * ys;
   }
+}
+
+/// Row r's outputs for all nb replicas (finish_replicas).
+template <typename T>
+inline void finish_row(const RowKernelArgs<T>& a, NodeIndex r, const T* p, std::size_t stride,
+                       int nb) {
+  finish_replicas(a, r, p, stride, nb, 0, nb);
 }
 
 }  // namespace hmfnet

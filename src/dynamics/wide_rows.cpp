@@ -37,11 +37,20 @@ struct Shape {
   static_assert(k_record % k_per_register == 0, "a record fills whole registers");
 };
 
-// acc += w q (or q on a 0/1 network) for the record of entry e.
+// Where a group of replicas sits in the gathered table and the outputs: a node's record of
+// `stride` values of T (2 nb, nb the run's replicas), the group's from `offset` (2 x its first
+// replica) on. A run whose count has a version of its own is one group: stride 2B, offset 0,
+// constants once inlined.
+struct GroupPlace {
+  std::size_t stride;
+  std::size_t offset;
+};
+
+// acc += w q (or q on a 0/1 network) for the group's values of entry e's record.
 template <typename T, typename S, std::size_t V, bool Weighted>
 HMFNET_LANES_INLINE void add_entry(Lanes<T, V> (&acc)[S::k_registers], const RowKernelArgs<T>& a,
-                                   EdgeOffset e) {
-  const T* q = a.column_cs + S::k_record * static_cast<std::size_t>(a.cols[e]);
+                                   EdgeOffset e, GroupPlace place) {
+  const T* q = a.column_cs + place.stride * static_cast<std::size_t>(a.cols[e]) + place.offset;
   add_lanes<T, V, S::k_record, Weighted>(acc, q, Weighted ? a.weights[e] : T(1));
 }
 
@@ -66,8 +75,8 @@ HMFNET_LANES_INLINE D cos_lanes(const D& a, const D& b) {
   }
 }
 
-// finish_row's outputs (float64) of the replicas whose values sit in [c, c + W) of the four
-// partials at p (partial j at p[j 2B]; W doubles a register), lane by lane (float64 B = 4 and
+// finish_row's outputs (float64) of the group's replicas whose values sit in [c, c + W) of the
+// four partials at p (partial j at p[j 2B]; W doubles a register), lane by lane (float64 B = 4 and
 // 8: 1.04-1.14x the scalar finish, N = 10^4, 1 and 2 threads): the same IEEE operations on the same
 // operands in the same order. With y = (yc, ys) and the row's own o = (c, s) in adjacent lanes, and
 // x~ the pairs of x swapped: y * y + (y * y)~ is yc yc + ys ys in the cos lane, o * y + (o * y)~ is
@@ -76,13 +85,13 @@ HMFNET_LANES_INLINE D cos_lanes(const D& a, const D& b) {
 // -fno-math-errno lets GCC use it for the lanes).
 template <typename T, int B, std::size_t W>
 HMFNET_LANES_INLINE void finish_lanes(const RowKernelArgs<T>& a, NodeIndex r, const T* p,
-                                      std::size_t c) {
+                                      std::size_t c, GroupPlace place) {
   constexpr std::size_t record = 2 * static_cast<std::size_t>(B);
   using D = Lanes<double, W * sizeof(double)>;
   D s[4];
   for (std::size_t j = 0; j < 4; ++j) load_lanes<double, sizeof(D)>(s[j], p + j * record + c);
   const D y = (s[0] + s[1]) + (s[2] + s[3]);
-  const std::size_t at = 2 * static_cast<std::size_t>(r) * B + c;  // the record's first value
+  const std::size_t at = place.stride * static_cast<std::size_t>(r) + place.offset + c;
   D o;
   load_lanes<double, sizeof(D)>(o, a.owned_cs + at);
   const D q = y * y, dot = o * y, cross = o * swap_pairs(y);
@@ -96,41 +105,100 @@ HMFNET_LANES_INLINE void finish_lanes(const RowKernelArgs<T>& a, NodeIndex r, co
   for (std::size_t j = 0; j < W; j += 2) a.g[at / 2 + j / 2] = g[j];
 }
 
-// The row loop of one version: rows_kernel's walks, C = S::k_partials partials a walk.
+// Row r's walks for one group of B replicas: rows_kernel's walks, C = S::k_partials partials a
+// walk, then the group's outputs.
 template <typename T, int B, std::size_t V, std::size_t budget, bool Weighted>
-HMFNET_LANES_INLINE void rows_body(const RowKernelArgs<T>& a, NodeIndex rows) {
+HMFNET_LANES_INLINE void row_group(const RowKernelArgs<T>& a, NodeIndex r, GroupPlace place) {
   using S = Shape<T, B, V, budget>;
   constexpr std::size_t C = S::k_partials;
+  const EdgeOffset begin = a.row_ptr[r], end = a.row_ptr[r + 1];
+  const EdgeOffset full = begin + (end - begin) / 4 * 4;
+  alignas(64) T partial[4][S::k_record];
+#pragma GCC unroll 4
+  for (std::size_t pass = 0; pass < 4; pass += C) {
+    Lanes<T, V> acc[C][S::k_registers] = {};  // every lane +0.0
+    for (EdgeOffset k = begin; k < full; k += 4) {
+#pragma GCC unroll 4
+      for (std::size_t c = 0; c < C; ++c)
+        add_entry<T, S, V, Weighted>(acc[c], a, k + static_cast<EdgeOffset>(pass + c), place);
+    }
+    if (pass == 0) {
+      for (EdgeOffset k = full; k < end; ++k) add_entry<T, S, V, Weighted>(acc[0], a, k, place);
+    }
+#pragma GCC unroll 4
+    for (std::size_t c = 0; c < C; ++c) std::memcpy(partial[pass + c], acc[c], sizeof acc[c]);
+  }
+  if constexpr (sizeof(T) == sizeof(double)) {
+    // Doubles a register: the set's, or the record's where it is shorter (B = 2 in AVX-512).
+    constexpr std::size_t w = std::min(V, S::k_record * sizeof(double)) / sizeof(double);
+#pragma GCC unroll 4
+    for (std::size_t c = 0; c < S::k_record; c += w) {
+      finish_lanes<T, B, w>(a, r, &partial[0][0], c, place);
+    }
+  } else {
+    // float32: the lanes measured 0.95x the scalar finish (B = 8, N = 10^4, 1 thread, 5 rounds).
+    const auto nb = static_cast<int>(place.stride / 2), first = static_cast<int>(place.offset / 2);
+    finish_replicas(a, r, &partial[0][0], S::k_record, nb, first, B);
+  }
+}
+
+// The row loop of one version: every row one group of all B replicas.
+template <typename T, int B, std::size_t V, std::size_t budget, bool Weighted>
+HMFNET_LANES_INLINE void rows_body(const RowKernelArgs<T>& a, NodeIndex rows) {
 #pragma omp for schedule(static)
   for (NodeIndex r = 0; r < rows; ++r) {
-    const EdgeOffset begin = a.row_ptr[r], end = a.row_ptr[r + 1];
-    const EdgeOffset full = begin + (end - begin) / 4 * 4;
-    alignas(64) T partial[4][S::k_record];
-#pragma GCC unroll 4
-    for (std::size_t pass = 0; pass < 4; pass += C) {
-      Lanes<T, V> acc[C][S::k_registers] = {};  // every lane +0.0
-      for (EdgeOffset k = begin; k < full; k += 4) {
-#pragma GCC unroll 4
-        for (std::size_t c = 0; c < C; ++c)
-          add_entry<T, S, V, Weighted>(acc[c], a, k + static_cast<EdgeOffset>(pass + c));
-      }
-      if (pass == 0) {
-        for (EdgeOffset k = full; k < end; ++k) add_entry<T, S, V, Weighted>(acc[0], a, k);
-      }
-#pragma GCC unroll 4
-      for (std::size_t c = 0; c < C; ++c) std::memcpy(partial[pass + c], acc[c], sizeof acc[c]);
+    row_group<T, B, V, budget, Weighted>(a, r, GroupPlace{2 * static_cast<std::size_t>(B), 0});
+  }
+}
+
+// Replica b of a run of nb, alone, where no register of the set fits what is left of the count
+// (float64: one replica; float32: one to three): rows_kernel_single's four partials, in scalars.
+template <typename T, bool Weighted>
+HMFNET_LANES_INLINE void row_lane(const RowKernelArgs<T>& a, NodeIndex r, int nb, int b) {
+  const auto stride = 2 * static_cast<std::size_t>(nb), offset = 2 * static_cast<std::size_t>(b);
+  const EdgeOffset begin = a.row_ptr[r], end = a.row_ptr[r + 1];
+  const EdgeOffset full = begin + (end - begin) / 4 * 4;
+  T p[4][2] = {};  // every partial +0.0
+  const auto add = [&](T* acc, EdgeOffset e) {
+    const T* q = a.column_cs + stride * static_cast<std::size_t>(a.cols[e]) + offset;
+    const T w = Weighted ? a.weights[e] : T(1);
+    acc[0] += w * q[0];
+    acc[1] += w * q[1];
+  };
+  for (EdgeOffset k = begin; k < full; k += 4) {
+    for (std::size_t j = 0; j < 4; ++j) add(p[j], k + static_cast<EdgeOffset>(j));
+  }
+  for (EdgeOffset k = full; k < end; ++k) add(p[0], k);
+  finish_replicas(a, r, &p[0][0], 2, nb, b, 1);
+}
+
+// A run-time count nb in groups of 8, then 4 and 2 replicas, each of whole registers of at most
+// V bytes, and the replicas left one at a time. Each replica's lane receives the additions it
+// would receive in a run of its own (the replicas are independent lanes), so the grouping
+// changes no bit; the row's indices are read once per group, from L1 after the first.
+template <typename T, std::size_t V, std::size_t budget, bool Weighted>
+HMFNET_LANES_INLINE void grouped_rows_body(const RowKernelArgs<T>& a, NodeIndex rows, int nb) {
+  const auto stride = 2 * static_cast<std::size_t>(nb);
+  const auto place = [stride](int b) {
+    return GroupPlace{stride, 2 * static_cast<std::size_t>(b)};
+  };
+#pragma omp for schedule(static)
+  for (NodeIndex r = 0; r < rows; ++r) {
+    int b = 0;
+    for (; nb - b >= 8; b += 8) {
+      row_group<T, 8, std::min(V, k_record_bytes<T, 8>), budget, Weighted>(a, r, place(b));
     }
-    if constexpr (sizeof(T) == sizeof(double)) {
-      // Doubles a register: the set's, or the record's where it is shorter (B = 2 in AVX-512).
-      constexpr std::size_t w = std::min(V, S::k_record * sizeof(double)) / sizeof(double);
-#pragma GCC unroll 4
-      for (std::size_t c = 0; c < S::k_record; c += w) {
-        finish_lanes<T, B, w>(a, r, &partial[0][0], c);
-      }
-    } else {
-      // float32: the lanes measured 0.95x the scalar finish (B = 8, N = 10^4, 1 thread, 5 rounds).
-      finish_row(a, r, &partial[0][0], S::k_record, B);
+    if (nb - b >= 4) {
+      row_group<T, 4, std::min(V, k_record_bytes<T, 4>), budget, Weighted>(a, r, place(b));
+      b += 4;
     }
+    if constexpr (k_record_bytes<T, 2> >= 32) {
+      if (nb - b >= 2) {
+        row_group<T, 2, std::min(V, k_record_bytes<T, 2>), budget, Weighted>(a, r, place(b));
+        b += 2;
+      }
+    }
+    for (; b < nb; ++b) row_lane<T, Weighted>(a, r, nb, b);
   }
 }
 
@@ -148,6 +216,18 @@ __attribute__((target("avx2"))) void rows_avx2(const RowKernelArgs<T>& a, NodeIn
   rows_body<T, B, k_avx2_bytes, k_avx2_budget, Weighted>(a, rows);
 }
 
+template <typename T, bool Weighted>
+__attribute__((target("avx512f,avx512dq"))) void grouped_rows_avx512(const RowKernelArgs<T>& a,
+                                                                     NodeIndex rows, int nb) {
+  grouped_rows_body<T, k_avx512_bytes, k_avx512_budget, Weighted>(a, rows, nb);
+}
+
+template <typename T, bool Weighted>
+__attribute__((target("avx2"))) void grouped_rows_avx2(const RowKernelArgs<T>& a, NodeIndex rows,
+                                                       int nb) {
+  grouped_rows_body<T, k_avx2_bytes, k_avx2_budget, Weighted>(a, rows, nb);
+}
+
 template <typename T, int B, bool Weighted>
 void rows_in(const RowKernelArgs<T>& a, NodeIndex rows, SincosIsa isa) {
   if constexpr (k_record_bytes<T, B> >= 32) {
@@ -159,7 +239,8 @@ void rows_in(const RowKernelArgs<T>& a, NodeIndex rows, SincosIsa isa) {
   }
 }
 
-// The counts wide_rows_serve allows; nothing for another (a precondition of the callers).
+// The counts wide_rows_serve allows, and in groups those wide_groups_serve allows; nothing for
+// another (a precondition of the callers).
 template <typename T, bool Weighted>
 void dispatch(const RowKernelArgs<T>& a, NodeIndex rows, int replicas, SincosIsa isa) {
   switch (replicas) {
@@ -173,6 +254,11 @@ void dispatch(const RowKernelArgs<T>& a, NodeIndex rows, int replicas, SincosIsa
       rows_in<T, 8, Weighted>(a, rows, isa);
       break;
     default:
+      if (isa == SincosIsa::avx512) {
+        grouped_rows_avx512<T, Weighted>(a, rows, replicas);
+      } else {
+        grouped_rows_avx2<T, Weighted>(a, rows, replicas);
+      }
       break;
   }
 }
@@ -251,6 +337,18 @@ bool wide_rows_serve(int replicas, SincosIsa isa) {
 }
 
 template <typename T>
+bool wide_groups_serve(int replicas, SincosIsa isa) {
+#if defined(HMFNET_WIDE_ROWS_X86)
+  const bool counted = replicas == 1 || replicas == 2 || replicas == 4 || replicas == 8;
+  return replicas > 0 && !counted && isa != SincosIsa::baseline && sincos_isa_available(isa);
+#else
+  static_cast<void>(replicas);
+  static_cast<void>(isa);
+  return false;
+#endif
+}
+
+template <typename T>
 int row_walk_partials(int replicas, SincosIsa isa) {
   const std::size_t record = 2 * static_cast<std::size_t>(replicas) * sizeof(T);
 #if defined(HMFNET_WIDE_ROWS_X86)
@@ -299,6 +397,8 @@ void wide_segment_runs(const SegmentPass<T, I>& pass, const T* weights, int repl
 }
 
 template bool wide_rows_serve<double>(int, SincosIsa);
+template bool wide_groups_serve<double>(int, SincosIsa);
+template bool wide_groups_serve<float>(int, SincosIsa);
 template int row_walk_partials<double>(int, SincosIsa);
 template int row_walk_partials<float>(int, SincosIsa);
 template bool wide_rows_serve<float>(int, SincosIsa);

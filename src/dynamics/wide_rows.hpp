@@ -1,10 +1,11 @@
 #pragma once
 // The sparse kernel's row loops for 2, 4 or 8 replicas in AVX2 or AVX-512 registers: the
-// unblocked rows (wide_rows) and a segment's runs (wide_segment_runs). The build is x86-64
-// baseline, where a gathered record of 2B values of T takes 2B sizeof(T) / 16 SSE2 loads and
-// adds (eight of each for float64, B = 8) and the row is walked up to four times (float64 B = 8;
-// twice for float64 B = 4 and float32 B = 8) to keep the accumulators in 16 registers. Here a
-// record is one or two 64-byte registers (AVX-512) or one to four 32-byte ones (AVX2), and the
+// unblocked rows (wide_rows) and a segment's runs (wide_segment_runs); other counts of unblocked
+// rows in groups of 8, 4 and 2 replicas and single replicas (24 = 8 + 8 + 8, 11 = 8 + 2 + 1). The
+// build is x86-64 baseline, where a gathered record of 2B values of T takes 2B sizeof(T) / 16 SSE2
+// loads and adds (eight of each for float64, B = 8) and the row is walked up to four times (float64
+// B = 8; twice for float64 B = 4 and float32 B = 8) to keep the accumulators in 16 registers. Here
+// a record is one or two 64-byte registers (AVX-512) or one to four 32-byte ones (AVX2), and the
 // row is walked once (AVX-512) or at most twice (AVX2, float64 B = 8).
 //
 // The same sums as rows_kernel in network_force.cpp, bit for bit: the replicas' values are
@@ -26,15 +27,25 @@ namespace hmfnet {
 template <typename T>
 bool wide_rows_serve(int replicas, SincosIsa isa);
 
+/// Whether wide_rows runs `replicas` replicas of T in `isa` in groups: every count other than 1,
+/// 2, 4 and 8 in AVX2 or AVX-512 (which this CPU must run). Rows of a count that the baseline
+/// loops serve at a run-time width: float64 ER N = 2000, degree 100, 16 and 24 replicas, 1 thread
+/// on an Intel Xeon (family 6 model 106) gathered 0.59 and 0.72 G entries x replicas / s there,
+/// against 2.88 for 8 replicas.
+template <typename T>
+bool wide_groups_serve(int replicas, SincosIsa isa);
+
 /// The partial sums one walk of a row forms in the unblocked kernel that runs `replicas`
 /// replicas of T in `isa` (4: the row is walked once; 2: twice; 1: four times): wide_rows'
 /// version where wide_rows_serve, as many as keep their accumulators within half the register
 /// file (AVX-512: 32 registers of 64 bytes, AVX2: 16 of 32); else network_force.cpp's baseline
-/// loops (row_kernel_args.hpp: baseline_walk_partials; one walk at a run-time count).
+/// loops (row_kernel_args.hpp: baseline_walk_partials; one walk at a run-time count there and
+/// for the single replicas of a grouped count, whose groups walk as 8, 4 or 2 replicas do).
 template <typename T>
 int row_walk_partials(int replicas, SincosIsa isa);
 
-/// Rows [0, rows) as rows_kernel forms them, in `isa`, where wide_rows_serve: an orphaned
+/// Rows [0, rows) as rows_kernel forms them, in `isa`, where wide_rows_serve or
+/// wide_groups_serve: an orphaned
 /// `omp for` (every thread of a team calls it; outside one, one thread does all the rows).
 template <typename T>
 void wide_rows(const RowKernelArgs<T>& a, NodeIndex rows, int replicas, SincosIsa isa);

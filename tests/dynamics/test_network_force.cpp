@@ -100,25 +100,25 @@ TEST_CASE("float32 force is bit-identical for 1 and 2 threads and per replica", 
   }
 }
 
-TEST_CASE("Every replica kernel equals one-replica passes bit for bit [B = 2, 3, 4, 8]",
+TEST_CASE("Every replica kernel equals one-replica passes bit for bit [B = 2 to 24]",
           "[network_force]") {
   // Each B takes another kernel shape (the baseline loops' partials per pass: B = 2 four, B = 4
-  // two in float64 and four in float32, B = 8 one and two, B = 3 the run-time width; with AVX2 the
-  // wide loops of wide_rows.hpp for B = 2, 4, 8, the baseline ones in the test
-  // unit.baseline_row_loops), on 0/1 and weighted rows whose degrees are not all multiples of 4
-  // (the tail goes to partial 0).
+  // two in float64 and four in float32, B = 8 one and two, others the run-time width; with AVX2
+  // the wide loops of wide_rows.hpp for B = 2, 4, 8 and in groups for the others (3 = 2 + 1,
+  // 13 = 8 + 4 + 1, 24 = 8 + 8 + 8), the baseline ones in the test unit.baseline_row_loops), on
+  // 0/1 and weighted rows whose degrees are not all multiples of 4 (the tail goes to partial 0).
   const Network plain = erdos_renyi({500, 0.05, 9});
   const Network heavy = test::pair_weighted(plain);
   for (const Network* net : {&plain, &heavy}) {
     const DistributedNetwork d(*net);
     for (const ForcePrecision precision : {ForcePrecision::float64, ForcePrecision::float32}) {
       std::vector<Evaluation> singles;
-      for (int b = 0; b < 8; ++b) {
+      for (int b = 0; b < 24; ++b) {
         singles.push_back(evaluate(d, precision,
                                    initial_state(d.first_row(), d.local_size(),
                                                  {{6.0, 1.0, static_cast<std::uint64_t>(b + 3)}})));
       }
-      for (const int replicas : {2, 3, 4, 8}) {
+      for (const int replicas : {2, 3, 4, 8, 13, 24}) {
         const Evaluation all = evaluate(d, precision, state(d, replicas));
         const auto width = static_cast<std::size_t>(replicas);
         bool same = true;

@@ -2,7 +2,8 @@
 // (kernel_arithmetic.hpp: row_field, coupling_force, order_term, coupling_term), bit for bit:
 // partial j over the row's entries j, j + 4, ... of its first 4 floor(d / 4), the last d mod 4
 // into partial 0, each from +0.0. Rows of degree 0 to 40 (every tail), 0/1 and weighted rows,
-// float64 and float32, 2, 4 and 8 replicas, in every instruction set this CPU runs; tables with
+// float64 and float32, 2, 4 and 8 replicas and counts run in groups (3 to 24), in every
+// instruction set this CPU runs; tables with
 // -0.0 and subnormals. A segment's runs (wide_segment_runs) leave the carried partials and cursors
 // of the scalar loop, segment after segment, in 16- and 32-bit segments, for row ranges that start
 // anywhere.
@@ -190,6 +191,21 @@ TEST_CASE("the wide row loop sums as the definition, bit for bit", "[wide_rows]"
     }
   }
   if (versions == 0) WARN("no AVX2 here: the wide row loop does not run on this CPU");
+  // Counts in groups: each group shape (8, 4, 2 and single replicas, float32 without 2) and
+  // several groups of one shape, each group at another offset in the record.
+  for (const SincosIsa isa : {SincosIsa::avx2, SincosIsa::avx512}) {
+    for (const int replicas : {3, 5, 6, 7, 11, 16, 24}) {
+      CHECK(wide_groups_serve<double>(replicas, isa) == sincos_isa_available(isa));
+      if (!wide_groups_serve<double>(replicas, isa)) continue;
+      for (const bool weighted : {false, true}) {
+        compare<double>(isa, rows, replicas, weighted);
+        compare<float>(isa, rows, replicas, weighted);
+      }
+    }
+    CHECK_FALSE(wide_groups_serve<double>(8, isa));  // a version of its own
+    CHECK_FALSE(wide_groups_serve<float>(1, isa));   // rows_kernel_single
+  }
+  CHECK_FALSE(wide_groups_serve<double>(3, SincosIsa::baseline));
   // Served wherever the CPU runs the set: a CPU with AVX2 must run the versions above.
   for (const SincosIsa isa : {SincosIsa::avx2, SincosIsa::avx512}) {
     CHECK(wide_rows_serve<double>(8, isa) == sincos_isa_available(isa));
