@@ -316,9 +316,13 @@ void NetworkForce::run_rows(const T* weights, const T* column_cs, NodeIndex rows
 
 double NetworkForce::lane_gather_cost(int lanes) const {
   const bool float32 = m_precision == ForcePrecision::float32;
-  const bool wide = float32 ? wide_rows_serve<float>(lanes, sincos_isa())
-                            : wide_rows_serve<double>(lanes, sincos_isa());
-  return wide ? wide_lane_gather_cost(float32, lanes) : 1.0;
+  const SincosIsa isa = sincos_isa();
+  const bool wide =
+      float32 ? wide_rows_serve<float>(lanes, isa) : wide_rows_serve<double>(lanes, isa);
+  if (wide) return wide_lane_gather_cost(float32, lanes);
+  const bool grouped =
+      float32 ? wide_groups_serve<float>(lanes, isa) : wide_groups_serve<double>(lanes, isa);
+  return grouped ? grouped_lane_gather_cost(float32, lanes) : 1.0;
 }
 
 void NetworkForce::take_columns(DistributedNetwork& network) {

@@ -31,6 +31,19 @@ double wide_lane_gather_cost(bool float32, int lanes) {
   }
 }
 
+double grouped_lane_gather_cost(bool float32, int lanes) {
+  if (lanes <= 0) return 1.0;
+  double total = 0.0;
+  int left = lanes;
+  for (const int group : {8, 4, 2}) {
+    if (group == 2 && float32) break;  // float32 pairs: 16-byte records, single replicas
+    const int whole = group == 8 ? left / 8 : static_cast<int>(left >= group);
+    total += whole * group * wide_lane_gather_cost(float32, group);
+    left -= whole * group;
+  }
+  return (total + left) / lanes;
+}
+
 std::int64_t step_work(std::int64_t gathers, std::int64_t rows, std::int64_t lanes,
                        std::int64_t row_work) {
   return (gathers + row_work * rows) * lanes;

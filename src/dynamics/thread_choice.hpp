@@ -72,6 +72,11 @@ inline constexpr std::int64_t k_rank_one_row_work = 15;
 /// the rule was measured).
 double wide_lane_gather_cost(bool float32, int lanes);
 
+/// The same for a count the wide loops run in groups (wide_rows.hpp: wide_groups_serve): groups
+/// of 8, 4 and 2 (float64) replicas at their costs above, the replicas left at 1, averaged over
+/// the lanes (24: 0.44; float64 3: (2 x 0.64 + 1) / 3).
+double grouped_lane_gather_cost(bool float32, int lanes);
+
 /// The rule's work of one step on this rank: (gathers + row_work x rows) x replica lanes.
 std::int64_t step_work(std::int64_t gathers, std::int64_t rows, std::int64_t lanes,
                        std::int64_t row_work = k_row_work);

@@ -53,17 +53,28 @@ bool launched_as_rank() {
 // --version` took 0.38 s, 0.07 s without both (Open MPI 4.1, Debian; the bare MPI_Init 0.38 s
 // against 0.04 s), paid by every command and every Python session. Two MCA parameters, read
 // from the environment at MPI_Init, skip both: an isolated singleton (no daemon; Open MPI 5 has
-// no such parameter and starts none) and the ob1 messaging layer. A third keeps it out of the
-// file system: every isolated singleton names itself [0,1],0 and so shares one session directory,
-// TMPDIR/ompi.HOST.UID/jf.0/1/0, and one ending removes jf.0 while another creates it ("A call to
-// mkdir was unable to create the desired directory": 6 of 300 `hmfnet --version` started 8 at a
-// time, none with the parameter). A singleton has no peer to share memory with, so it needs none.
-// A value the user set is kept.
-constexpr std::array<std::pair<const char*, const char*>, 3> k_singleton_parameters{{
+// no such parameter and starts none) and the ob1 messaging layer. A value the user set is kept.
+constexpr std::array<std::pair<const char*, const char*>, 2> k_singleton_parameters{{
     {"OMPI_MCA_ess_singleton_isolated", "1"},
     {"OMPI_MCA_pml", "ob1"},
-    {"OMPI_MCA_orte_create_session_dirs", "0"},
 }};
+
+// An isolated singleton is also kept out of the file system: every one names itself [0,1],0 and
+// so shares one session directory, TMPDIR/ompi.HOST.UID/jf.0/1/0, and one ending removes jf.0
+// while another creates it ("A call to mkdir was unable to create the desired directory": 6 of
+// 300 `hmfnet --version` started 8 at a time, none with this parameter). With no daemon and no
+// process it could spawn, it has no peer to share memory with. A singleton the user made
+// non-isolated (to spawn: docs/commands.md) keeps its directory, which its daemon's children use.
+constexpr std::pair<const char*, const char*> k_isolated_no_session_dirs{
+    "OMPI_MCA_orte_create_session_dirs", "0"};
+
+// Whether Open MPI reads the isolated-singleton parameter as true (its boolean spellings).
+bool isolated_singleton() {
+  const char* value = std::getenv(k_singleton_parameters[0].first);
+  if (value == nullptr) return false;
+  const std::string_view v(value);
+  return v == "1" || v == "true" || v == "yes";
+}
 
 // The names of the environment's variables that Open MPI and PMIx read (OMPI_, OPAL_, PMIX_).
 std::set<std::string> mpi_variable_names() {
@@ -88,6 +99,9 @@ class SingletonEnvironment {
   SingletonEnvironment() : m_before(mpi_variable_names()) {
     for (const auto& [name, value] : k_singleton_parameters) {
       setenv(name, value, /*overwrite=*/0);
+    }
+    if (isolated_singleton()) {
+      setenv(k_isolated_no_session_dirs.first, k_isolated_no_session_dirs.second, /*overwrite=*/0);
     }
   }
   ~SingletonEnvironment() {

@@ -3,9 +3,11 @@
 # rank_one_force.cpp): `hmfnet simulate` on K_N without self-loops (N = 2500: two of the 2048-row
 # blocks the sums are cut into) with 16 replicas (two whole AVX-512 or AVX2 groups) and 13 (one
 # whole, one partial), on a rank-one network with unequal a_n (--force rank-one: an error, not
-# the sparse force, should its structure go undetected), and on an ER network (9 replicas: the
-# baseline row loop; 8 in float64 and 4 in float32: the wide row loops of dynamics/wide_rows.hpp
-# in AVX-512 and AVX2, and the baseline loop under HMFNET_SINCOS_ISA=baseline; the rank-one
+# the sparse force, should its structure go undetected), and on an ER network (9 replicas: a
+# group of 8 and a single replica in the wide sets, the baseline loop's run-time width under
+# HMFNET_SINCOS_ISA=baseline; 8 in float64 and 4 in float32: the wide row loops of
+# dynamics/wide_rows.hpp in AVX-512 and AVX2, and the baseline loop under
+# HMFNET_SINCOS_ISA=baseline; the rank-one
 # network's weights through the sparse force at 8 float32 and 2 float64 replicas), gives the same
 # --json points and results file under the widest set this CPU runs and under
 # HMFNET_SINCOS_ISA=baseline and avx2. On a CPU without AVX-512 the widest is one of the others,

@@ -234,7 +234,8 @@ TEST_CASE(
     "[kernel_arithmetic]") {
   // Replica counts 1, 2, 4, 8 and 3 take every path of network_force.cpp's dispatch (the
   // one-replica kernel, the compiled widths: the wide loops where the CPU has AVX2, the baseline
-  // ones with their partials per pass under unit.baseline_row_loops; the run-time width).
+  // ones with their partials per pass under unit.baseline_row_loops; 3: the wide loops' groups,
+  // 2 + 1, and the baseline loop's run-time width under unit.baseline_row_loops).
   constexpr double h = 0.05;
   constexpr int steps = 20;
   for (const ForcePrecision precision : {ForcePrecision::float64, ForcePrecision::float32}) {

@@ -136,7 +136,16 @@ TEST_CASE("The sparse force gives the rule its lanes' gathers at the wide loops'
   const bool wide = wide_rows_serve<double>(8, sincos_isa());
   CHECK(force.lane_gather_cost(8) == (wide ? wide_lane_gather_cost(false, 8) : 1.0));
   CHECK(force.lane_gather_cost(1) == 1.0);
-  CHECK(force.lane_gather_cost(3) == 1.0);  // the baseline loop's run-time width
+  // Counts in groups (float64 3 = 2 + 1, 24 = 8 + 8 + 8), where the CPU runs the wide loops;
+  // the baseline loop's run-time width otherwise.
+  const bool grouped = wide_groups_serve<double>(3, sincos_isa());
+  CHECK(force.lane_gather_cost(3) ==
+        (grouped ? (2 * wide_lane_gather_cost(false, 2) + 1) / 3 : 1.0));
+  CHECK(force.lane_gather_cost(24) == Approx(grouped ? wide_lane_gather_cost(false, 8) : 1.0));
+  CHECK(grouped_lane_gather_cost(false, 13) ==
+        Approx((8 * 0.44 + 4 * 0.44 + 1.0) / 13).epsilon(1e-15));
+  CHECK(grouped_lane_gather_cost(true, 7) == Approx((4 * 0.40 + 3.0) / 7).epsilon(1e-15));
+  CHECK(grouped_lane_gather_cost(true, 16) == Approx(0.32).epsilon(1e-15));
   const NetworkForce narrow(d, ForcePrecision::float32);
   CHECK(narrow.lane_gather_cost(2) == 1.0);  // 16-byte records: the baseline loop
   CHECK(narrow.lane_gather_cost(8) ==

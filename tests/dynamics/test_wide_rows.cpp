@@ -194,7 +194,7 @@ TEST_CASE("the wide row loop sums as the definition, bit for bit", "[wide_rows]"
   // Counts in groups: each group shape (8, 4, 2 and single replicas, float32 without 2) and
   // several groups of one shape, each group at another offset in the record.
   for (const SincosIsa isa : {SincosIsa::avx2, SincosIsa::avx512}) {
-    for (const int replicas : {3, 5, 6, 7, 11, 16, 24}) {
+    for (const int replicas : {3, 5, 6, 7, 11, 13, 14, 16, 24}) {
       CHECK(wide_groups_serve<double>(replicas, isa) == sincos_isa_available(isa));
       if (!wide_groups_serve<double>(replicas, isa)) continue;
       for (const bool weighted : {false, true}) {
