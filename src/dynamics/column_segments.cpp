@@ -104,6 +104,7 @@ NodeIndex automatic_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex r
                                   std::size_t memory_bytes) {
   const auto table = static_cast<double>(columns) * static_cast<double>(record_bytes);
   if (columns <= 0 || rows <= 0 || table <= static_cast<double>(caches.l2)) return k_unsegmented;
+  if (record_bytes > k_max_segmented_record_bytes) return k_unsegmented;
   const bool in_l3 = slices_in_l3(caches);
   const double slice = in_l3 ? static_cast<double>(caches.l3) / (2.0 * caches.l3_threads)
                              : static_cast<double>(caches.l2) / 2;

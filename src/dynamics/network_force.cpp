@@ -23,7 +23,7 @@ namespace {
 
 // The baseline row loop: x86-64 baseline instructions (SSE2), for every replica count where the
 // wide loops of wide_rows.hpp do not serve (HMFNET_SINCOS_ISA=baseline, a CPU without AVX2,
-// float32 B = 2, the segments' runs at counts other than 2, 4, 8); the same bits as they.
+// float32 B = 2); the same bits as they.
 // Replica count B fixed at compile time so the inner loops unroll and vectorise; `runtime_b`
 // serves other counts. Weighted is a template flag so the 0/1 loop reads no values.
 // Each replica is summed exactly as rows_kernel_single sums one, so B replicas in one pass equal
@@ -147,7 +147,7 @@ void segmented_rows_kernel(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, 
   const auto thread = static_cast<std::int64_t>(omp_get_thread_num());
   const NodeIndex panel = carried_rows(rows);
   const SincosIsa isa = sincos_isa();
-  const bool wide = wide_rows_serve<T>(nb, isa);
+  const bool wide = wide_rows_serve<T>(nb, isa) || wide_groups_serve<T>(nb, isa);
   for (std::int64_t p0 = 0; p0 < rows; p0 += panel) {
     const std::int64_t panel_rows = std::min<std::int64_t>(panel, rows - p0);
     const auto r0 = static_cast<NodeIndex>(p0 + panel_rows * thread / threads);
@@ -166,7 +166,7 @@ void segmented_rows_kernel(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, 
                                    seg == 0,
                                    seg + 1 == count,
                                    static_cast<NodeIndex>(p0)};
-      if constexpr (B == 2 || B == 4 || B == 8) {
+      if constexpr (B == 0 || B == 2 || B == 4 || B == 8) {
         if (wide) {
           wide_segment_runs(pass, a.weights, nb, r0, r1, isa);
           continue;

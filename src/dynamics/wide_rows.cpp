@@ -273,6 +273,62 @@ struct WideRecordAdd {
   }
 };
 
+// The same for a run-time count's record of n values: in registers of `widest` bytes, pairs of
+// them first (8 replicas of float64 in AVX-512), then one, then a 32-byte one (AVX-512), the
+// values left in scalars. Each value is its own sum, so how the record is cut changes no bit.
+template <std::size_t widest>
+struct GroupedRecordAdd {
+  template <typename T, int B, bool Weighted>
+  static HMFNET_LANES_INLINE void add(T* acc, const T* q, T w, int n) {
+    static_assert(B == 0, "a run-time count");
+    constexpr int per = static_cast<int>(widest / sizeof(T));
+    int v = 0;
+    for (; n - v >= 2 * per; v += 2 * per) {
+      add_lanes_at<T, widest, 2 * per, Weighted>(acc + v, q + v, w);
+    }
+    if (n - v >= per) {
+      add_lanes_at<T, widest, per, Weighted>(acc + v, q + v, w);
+      v += per;
+    }
+    if constexpr (widest > 32) {
+      constexpr int half = static_cast<int>(32 / sizeof(T));
+      if (n - v >= half) {
+        add_lanes_at<T, 32, half, Weighted>(acc + v, q + v, w);
+        v += half;
+      }
+    }
+    for (; v < n; ++v) acc[v] += (Weighted ? w : T(1)) * q[v];
+  }
+};
+
+template <typename T, bool Weighted, typename I>
+__attribute__((target("avx512f,avx512dq"))) void grouped_runs_avx512(const SegmentPass<T, I>& pass,
+                                                                     const T* weights, int nb,
+                                                                     NodeIndex r0, NodeIndex r1) {
+  scalar_segment_runs<T, 0, Weighted, I, GroupedRecordAdd<k_avx512_bytes>>(pass, weights, nb, r0,
+                                                                           r1);
+}
+
+template <typename T, bool Weighted, typename I>
+__attribute__((target("avx2"))) void grouped_runs_avx2(const SegmentPass<T, I>& pass,
+                                                       const T* weights, int nb, NodeIndex r0,
+                                                       NodeIndex r1) {
+  scalar_segment_runs<T, 0, Weighted, I, GroupedRecordAdd<k_avx2_bytes>>(pass, weights, nb, r0, r1);
+}
+
+template <typename T, typename I>
+void grouped_runs_in(const SegmentPass<T, I>& pass, const T* weights, int nb, NodeIndex r0,
+                     NodeIndex r1, SincosIsa isa) {
+  const bool avx512 = isa == SincosIsa::avx512;
+  if (weights == nullptr) {
+    avx512 ? grouped_runs_avx512<T, false, I>(pass, weights, nb, r0, r1)
+           : grouped_runs_avx2<T, false, I>(pass, weights, nb, r0, r1);
+  } else {
+    avx512 ? grouped_runs_avx512<T, true, I>(pass, weights, nb, r0, r1)
+           : grouped_runs_avx2<T, true, I>(pass, weights, nb, r0, r1);
+  }
+}
+
 template <typename T, int B, bool Weighted, typename I>
 __attribute__((target("avx512f,avx512dq"))) void runs_avx512(const SegmentPass<T, I>& pass,
                                                              const T* weights, NodeIndex r0,
@@ -315,6 +371,7 @@ void dispatch_runs(const SegmentPass<T, I>& pass, const T* weights, int replicas
       runs_in<T, 8, I>(pass, weights, r0, r1, isa);
       break;
     default:
+      grouped_runs_in<T, I>(pass, weights, replicas, r0, r1, isa);
       break;
   }
 }

@@ -1,7 +1,8 @@
 #pragma once
 // The sparse kernel's row loops for 2, 4 or 8 replicas in AVX2 or AVX-512 registers: the
-// unblocked rows (wide_rows) and a segment's runs (wide_segment_runs); other counts of unblocked
-// rows in groups of 8, 4 and 2 replicas and single replicas (24 = 8 + 8 + 8, 11 = 8 + 2 + 1). The
+// unblocked rows (wide_rows) and a segment's runs (wide_segment_runs); other counts in groups:
+// unblocked rows in groups of 8, 4 and 2 replicas and single replicas (24 = 8 + 8 + 8, 11 = 8 +
+// 2 + 1), a segment's records cut into registers likewise. The
 // build is x86-64 baseline, where a gathered record of 2B values of T takes 2B sizeof(T) / 16 SSE2
 // loads and adds (eight of each for float64, B = 8) and the row is walked up to four times (float64
 // B = 8; twice for float64 B = 4 and float32 B = 8) to keep the accumulators in 16 registers. Here
@@ -27,11 +28,11 @@ namespace hmfnet {
 template <typename T>
 bool wide_rows_serve(int replicas, SincosIsa isa);
 
-/// Whether wide_rows runs `replicas` replicas of T in `isa` in groups: every count other than 1,
-/// 2, 4 and 8 in AVX2 or AVX-512 (which this CPU must run). Rows of a count that the baseline
-/// loops serve at a run-time width: float64 ER N = 2000, degree 100, 16 and 24 replicas, 1 thread
-/// on an Intel Xeon (family 6 model 106) gathered 0.59 and 0.72 G entries x replicas / s there,
-/// against 2.88 for 8 replicas.
+/// Whether wide_rows and wide_segment_runs run `replicas` replicas of T in `isa` in groups: every
+/// count other than 1, 2, 4 and 8 in AVX2 or AVX-512 (which this CPU must run). Rows of a count
+/// that the baseline loops serve at a run-time width: float64 ER N = 2000, degree 100, 16 and 24
+/// replicas, 1 thread on an Intel Xeon (family 6 model 106) gathered 0.59 and 0.72 G entries x
+/// replicas / s there, against 2.88 for 8 replicas.
 template <typename T>
 bool wide_groups_serve(int replicas, SincosIsa isa);
 
@@ -51,7 +52,7 @@ template <typename T>
 void wide_rows(const RowKernelArgs<T>& a, NodeIndex rows, int replicas, SincosIsa isa);
 
 /// Rows [r0, r1) of one segment as scalar_segment_runs adds them (`weights`: the CSR's, nullptr
-/// on a 0/1 network), in `isa`, where wide_rows_serve (the same records).
+/// on a 0/1 network), in `isa`, where wide_rows_serve or wide_groups_serve (the same records).
 template <typename T, typename I>
 void wide_segment_runs(const SegmentPass<T, I>& pass, const T* weights, int replicas, NodeIndex r0,
                        NodeIndex r1, SincosIsa isa);

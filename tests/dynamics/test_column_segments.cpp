@@ -75,7 +75,7 @@ TEST_CASE("segmented force equals the unblocked force bit for bit [ER N=603, wid
   for (const Network* net : {&plain, &heavy}) {
     const DistributedNetwork d(*net);
     for (const ForcePrecision precision : {ForcePrecision::float64, ForcePrecision::float32}) {
-      for (const int replicas : {1, 2, 3, 8}) {
+      for (const int replicas : {1, 2, 3, 8, 13}) {
         const RotorState s = state(d, replicas);
         const Evaluation unblocked = evaluate(d, precision, k_unsegmented, s);
         REQUIRE(unblocked.segments == 1);
@@ -364,6 +364,12 @@ TEST_CASE("automatic segment width: unblocked while the table fits in L2, half a
   CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 16, l2, plenty) == 62'500);
   // 8 replicas: 128 MB would take 123 slices, but 100 / 6 entries allow 16 segments.
   CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 128, l2, plenty) == 62'500);
+  // 16 float64 replicas (256-byte records), 32 float32 ones: unblocked at any size.
+  CHECK(automatic_segment_width(10'000, 1'000'000, 10'000, 256, l2, plenty) == k_unsegmented);
+  CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 256, l2, plenty) ==
+        k_unsegmented);
+  CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 129, l2, plenty) ==
+        k_unsegmented);
   // Degree 10: fewer than two segments of 6 entries: unblocked.
   CHECK(automatic_segment_width(1'000'000, 10'000'000, 1'000'000, 16, l2, plenty) == k_unsegmented);
   // The segments' memory at N = 10^6, degree 100, float64, one replica: 200 MB of 16-bit

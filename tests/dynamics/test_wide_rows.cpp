@@ -152,16 +152,18 @@ TEST_CASE("the wide segment runs add as the scalar loop does, bit for bit", "[wi
   REQUIRE(!wide.narrow());
   int versions = 0;
   for (const SincosIsa isa : {SincosIsa::avx2, SincosIsa::avx512}) {
-    for (const int replicas : {2, 4, 8}) {
+    // 2, 4 and 8: versions of their own; the others' records cut into registers (24: three
+    // pairs of AVX-512 registers; 13: a pair, a 32-byte register and a scalar in float64).
+    for (const int replicas : {2, 4, 8, 3, 5, 13, 16, 24}) {
       for (const bool weighted : {false, true}) {
         for (const NodeIndex origin : {0, 41}) {
-          if (wide_rows_serve<double>(replicas, isa)) {
+          if (wide_rows_serve<double>(replicas, isa) || wide_groups_serve<double>(replicas, isa)) {
             compare_runs<double, std::uint16_t>(isa, rows, narrow, replicas, weighted, origin, 99);
             compare_runs<double, NodeIndex>(isa, rows, wide, replicas, weighted, origin, origin);
             compare_runs<double, NodeIndex>(isa, rows, wide, replicas, weighted, origin, 120);
             ++versions;
           }
-          if (wide_rows_serve<float>(replicas, isa)) {
+          if (wide_rows_serve<float>(replicas, isa) || wide_groups_serve<float>(replicas, isa)) {
             compare_runs<float, std::uint16_t>(isa, rows, narrow, replicas, weighted, origin, 150);
             compare_runs<float, NodeIndex>(isa, rows, wide, replicas, weighted, origin, 77);
             ++versions;
