@@ -101,10 +101,10 @@ std::size_t segmented_bytes(EdgeOffset nnz, NodeIndex rows, int segments, NodeIn
 
 NodeIndex automatic_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex rows,
                                   std::size_t record_bytes, CacheSizes caches,
-                                  std::size_t memory_bytes) {
+                                  std::size_t memory_bytes, bool rows_in_registers) {
   const auto table = static_cast<double>(columns) * static_cast<double>(record_bytes);
   if (columns <= 0 || rows <= 0 || table <= static_cast<double>(caches.l2)) return k_unsegmented;
-  if (record_bytes > k_max_segmented_record_bytes) return k_unsegmented;
+  if (rows_in_registers && record_bytes > k_max_segmented_record_bytes) return k_unsegmented;
   const bool in_l3 = slices_in_l3(caches);
   const double slice = in_l3 ? static_cast<double>(caches.l3) / (2.0 * caches.l3_threads)
                              : static_cast<double>(caches.l2) / 2;

@@ -43,9 +43,11 @@ bool slices_in_l3(CacheSizes caches);
 /// replicas fastest in 16 (6.25) of 4, 16, 31 and 62.
 inline constexpr double k_min_entries_per_segment = 6.0;
 
-/// Records longer than this (more than 8 float64 or 16 float32 replicas) stay unblocked: the
-/// carry moves 8 x record bytes a row and segment, and the unblocked rows add them in registers
-/// (wide_rows.hpp's groups) where a segment's runs add them in memory. Measured (Intel Xeon
+/// Records longer than this (more than 8 float64 or 16 float32 replicas) stay unblocked where the
+/// unblocked rows run in wide registers (wide_rows.hpp's groups; not measured for the baseline
+/// loop, which keeps the rule's segments): the carry moves 8 x record bytes a row and segment,
+/// and the unblocked rows add them in registers where a segment's runs add them in memory.
+/// Measured (Intel Xeon
 /// family 6 model 106, 1.25 MiB L2, 48 MiB L3; float64, 16 replicas, 256-byte records, 1 thread,
 /// bench SegmentedStep): ER N = 10^4, degree 100, 1.32 G entries x replicas / s unblocked against
 /// 0.68 in the rule's 4 slices; N = 10^6 0.234 against 0.199 in its 16 segments.
@@ -94,7 +96,8 @@ std::size_t segmented_bytes(EdgeOffset nnz, NodeIndex rows, int segments, NodeIn
 /// degree 100, float64, 8 replicas) exceeds half of `memory_bytes`: a network that runs
 /// unblocked is never pushed out of memory for the speed-up (counted as added even where the
 /// force takes the network's indices and the copy replaces them: the rule errs on the side of
-/// memory), and none for records over k_max_segmented_record_bytes. Slices in L3 also leave the
+/// memory), and none for records over k_max_segmented_record_bytes when `rows_in_registers`
+/// (the unblocked rows run wide_rows.hpp's loops for this count). Slices in L3 also leave the
 /// rows unblocked where the carried sums would move more bytes than the gathered lines they save,
 /// both from memory (a record of 64 bytes or more fills its lines: float64 with 4 and 8
 /// replicas, float32 with 8, ran 1.2-2.2x faster unsegmented at N = 10^6 on the AMD EPYC); an L3
@@ -102,7 +105,7 @@ std::size_t segmented_bytes(EdgeOffset nnz, NodeIndex rows, int segments, NodeIn
 /// table's type).
 NodeIndex automatic_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex rows,
                                   std::size_t record_bytes, CacheSizes caches,
-                                  std::size_t memory_bytes);
+                                  std::size_t memory_bytes, bool rows_in_registers = true);
 
 /// Segments of at most this many columns keep their column indices in 16 bits, relative to the
 /// segment's first column: half the copy's bytes (200 MB instead of 400 at ER N = 10^6, degree

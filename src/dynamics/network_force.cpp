@@ -365,14 +365,18 @@ void NetworkForce::prepare_segments(NodeIndex rows, int replicas) {
       threads == m_segmented_threads) {
     return;
   }
-  const std::size_t value_bytes =
-      m_precision == ForcePrecision::float64 ? sizeof(double) : sizeof(float);
+  const bool float64 = m_precision == ForcePrecision::float64;
+  const std::size_t value_bytes = float64 ? sizeof(double) : sizeof(float);
+  const SincosIsa isa = sincos_isa();
+  const bool registers =
+      float64 ? wide_rows_serve<double>(replicas, isa) || wide_groups_serve<double>(replicas, isa)
+              : wide_rows_serve<float>(replicas, isa) || wide_groups_serve<float>(replicas, isa);
   const NodeIndex width =
       m_segment_request != k_automatic_segments
           ? m_segment_request
           : automatic_segment_width(m_adjacency.columns, m_nnz, rows,
                                     2 * static_cast<std::size_t>(replicas) * value_bytes,
-                                    this_cpu_caches(threads), available_memory_bytes());
+                                    this_cpu_caches(threads), available_memory_bytes(), registers);
   if (width != m_segment_width) {
     cut(width);
     m_segment_width = width;

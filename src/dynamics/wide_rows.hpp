@@ -2,7 +2,8 @@
 // The sparse kernel's row loops for 2, 4 or 8 replicas in AVX2 or AVX-512 registers: the
 // unblocked rows (wide_rows) and a segment's runs (wide_segment_runs); other counts in groups:
 // unblocked rows in groups of 8, 4 and 2 replicas and single replicas (24 = 8 + 8 + 8, 11 = 8 +
-// 2 + 1), a segment's records cut into registers likewise. The
+// 2 + 1); a segment's records in pairs of the widest registers, then one, then a 32-byte one
+// (AVX-512), the values left in scalars. The
 // build is x86-64 baseline, where a gathered record of 2B values of T takes 2B sizeof(T) / 16 SSE2
 // loads and adds (eight of each for float64, B = 8) and the row is walked up to four times (float64
 // B = 8; twice for float64 B = 4 and float32 B = 8) to keep the accumulators in 16 registers. Here

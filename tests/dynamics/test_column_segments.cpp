@@ -370,6 +370,9 @@ TEST_CASE("automatic segment width: unblocked while the table fits in L2, half a
         k_unsegmented);
   CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 129, l2, plenty) ==
         k_unsegmented);
+  // Unless the unblocked rows would run the baseline loop (no AVX2): the rule's 16 segments.
+  CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 256, l2, plenty, false) ==
+        62'500);
   // Degree 10: fewer than two segments of 6 entries: unblocked.
   CHECK(automatic_segment_width(1'000'000, 10'000'000, 1'000'000, 16, l2, plenty) == k_unsegmented);
   // The segments' memory at N = 10^6, degree 100, float64, one replica: 200 MB of 16-bit

@@ -153,7 +153,8 @@ TEST_CASE("the wide segment runs add as the scalar loop does, bit for bit", "[wi
   int versions = 0;
   for (const SincosIsa isa : {SincosIsa::avx2, SincosIsa::avx512}) {
     // 2, 4 and 8: versions of their own; the others' records cut into registers (24: three
-    // pairs of AVX-512 registers; 13: a pair, a 32-byte register and a scalar in float64).
+    // pairs of AVX-512 registers; 13 in float64: a pair, a register and one replica in scalars
+    // in AVX-512, three registers and one replica in scalars in AVX2; 3 in float32: scalars).
     for (const int replicas : {2, 4, 8, 3, 5, 13, 16, 24}) {
       for (const bool weighted : {false, true}) {
         for (const NodeIndex origin : {0, 41}) {
