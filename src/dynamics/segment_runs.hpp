@@ -53,9 +53,10 @@ struct ScalarRecordAdd {
 /// d mod 4 to the row's carried partials p (partial j of value v at p[j x record + v]): entry
 /// k < full into partial k mod 4, the others into partial 0, as the unblocked kernels sum them.
 /// The scalar loop, for every replica count and for weighted networks: one loop whatever the
-/// run's first place (a rotation of four register accumulators with its remainder branches
-/// measured no faster, bench SegmentedStep, Intel Xeon). Always inlined: a caller compiled for
-/// a wider instruction set (wide_rows.cpp) compiles it in that set.
+/// run's first place (in scalars, a rotation of four register accumulators with its remainder
+/// branches measured no faster, bench SegmentedStep, Intel Xeon; records of one AVX2 or AVX-512
+/// register take such a rotation in wide_rows.cpp, RegisterRun). Always inlined: a caller
+/// compiled for a wider instruction set (wide_rows.cpp) compiles it in that set.
 template <typename T, int B, bool Weighted, typename I, typename Add = ScalarRecordAdd>
 [[gnu::always_inline]] inline void add_run(T* p, const T* table, const I* cols, const T* w,
                                            EdgeOffset place, EdgeOffset n, EdgeOffset full,
@@ -73,6 +74,18 @@ template <typename T, int B, bool Weighted, typename I, typename Add = ScalarRec
 /// takes at least may read up to seven past its end (their records are loaded, masked, and
 /// never added).
 inline constexpr std::size_t k_run_padding = 8;
+
+/// How a run reaches its row's partials: add_run's loop, each record added by Add (the default:
+/// add_record). A policy of this shape with a loop of its own may replace it (wide_rows.cpp: the
+/// partials in registers for the run).
+template <typename Add = ScalarRecordAdd>
+struct RecordRun {
+  template <typename T, int B, bool Weighted, typename I>
+  [[gnu::always_inline]] static void add(T* p, const T* table, const I* cols, const T* w,
+                                         EdgeOffset place, EdgeOffset n, EdgeOffset full, int nb) {
+    add_run<T, B, Weighted, I, Add>(p, table, cols, w, place, n, full, nb);
+  }
+};
 
 /// One segment's pass, as the kernel hands it over; I: the type of its column indices
 /// (ColumnSegments: std::uint16_t or NodeIndex).
@@ -93,8 +106,9 @@ struct SegmentPass {
 
 /// Rows [r0, r1) of one segment in the scalar loop, for every replica count (B > 0 fixed at
 /// compile time, 0: nb at run time) and for weighted rows (`weights`: the CSR's, nullptr on a
-/// 0/1 network); each record added by Add (wide_rows.cpp: the same loop in wide registers).
-template <typename T, int B, bool Weighted, typename I, typename Add = ScalarRecordAdd>
+/// 0/1 network); each run added by Run (wide_rows.cpp: its records in wide registers, or the
+/// run's partials in them).
+template <typename T, int B, bool Weighted, typename I, typename Run = RecordRun<>>
 [[gnu::always_inline]] inline void scalar_segment_runs(const SegmentPass<T, I>& pass,
                                                        const T* weights, int nb, NodeIndex r0,
                                                        NodeIndex r1) {
@@ -109,8 +123,8 @@ template <typename T, int B, bool Weighted, typename I, typename Add = ScalarRec
     const RunSpan run = walk.next(r);
     const EdgeOffset n = run.n;
     const T* w = Weighted ? weights + begin + place : nullptr;
-    add_run<T, B, Weighted, I, Add>(p, pass.table, pass.cols + run.begin, w, place, n,
-                                    degree / 4 * 4, nb);
+    Run::template add<T, B, Weighted, I>(p, pass.table, pass.cols + run.begin, w, place, n,
+                                         degree / 4 * 4, nb);
     if (!pass.last) pass.cursor[slot] = static_cast<std::uint32_t>(place + n);
   }
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <type_traits>
 
 #include "dynamics/segment_runs.hpp"
 #include "dynamics/wide_lanes.hpp"
@@ -273,6 +274,59 @@ struct WideRecordAdd {
   }
 };
 
+// A run of a compiled count whose record fills one register, with its row's four partials in
+// four registers for the whole run: loaded once and stored once, where add_run loads and stores
+// a partial at every entry (a chain through memory from one entry of a partial to its next). The
+// same additions in the same order, entry place + i into partial (place + i) mod 4 before `full`
+// and into partial 0 after it, so the same bits; the rotation is unrolled from the run's first
+// place, as no register can be indexed at run time.
+struct RegisterRun {
+  template <typename T, int B, bool Weighted, typename I>
+  static HMFNET_LANES_INLINE void add(T* p, const T* table, const I* cols, const T* w,
+                                      EdgeOffset place, EdgeOffset n, EdgeOffset full, int /*nb*/) {
+    constexpr std::size_t record = 2 * static_cast<std::size_t>(B), V = k_record_bytes<T, B>;
+    if (n == 0) return;  // the partials as they are (a narrow segment leaves most runs empty)
+    Lanes<T, V> acc[4];
+    for (std::size_t j = 0; j < 4; ++j) load_lanes<T, V>(acc[j], p + j * record);
+    // Always inlined, as everything holding a vector here (wide_lanes.hpp): a lambda's own
+    // function would be compiled outside the caller's instruction set.
+    const auto entry = [&](Lanes<T, V> & a, EdgeOffset i) __attribute__((always_inline)) {
+      add_lanes<T, V, record, Weighted>(&a, table + record * static_cast<std::size_t>(cols[i]),
+                                        Weighted ? w[i] : T(1));
+    };
+    const EdgeOffset split = std::clamp<EdgeOffset>(full - place, 0, n);
+    const EdgeOffset first = place & 3;
+    EdgeOffset i = 0;
+    if (first == 1 && i < split) entry(acc[1], i++);
+    if ((first == 1 || first == 2) && i < split) entry(acc[2], i++);
+    if (first != 0 && i < split) entry(acc[3], i++);
+    for (; i + 4 <= split; i += 4) {
+      entry(acc[0], i);
+      entry(acc[1], i + 1);
+      entry(acc[2], i + 2);
+      entry(acc[3], i + 3);
+    }
+    if (i < split) entry(acc[0], i++);
+    if (i < split) entry(acc[1], i++);
+    if (i < split) entry(acc[2], i++);
+    for (; i < n; ++i) entry(acc[0], i);
+    for (std::size_t j = 0; j < 4; ++j) std::memcpy(p + j * record, &acc[j], V);
+  }
+};
+
+// A compiled count's runs: RegisterRun where a record fills one register of the set (float64
+// B = 2 and 4, float32 B = 4 and 8 in AVX-512; float64 B = 2, float32 B = 4 in AVX2), else
+// add_run's loop over records in registers of at most V bytes. ER N = 10^5, degree 100 (the
+// rule's ~16 segments, runs of ~6 entries), 1 thread, `hmfnet simulate`, against the loop,
+// medians of 7 alternated rounds (Intel Xeon family 6 model 106): float64 B = 2 and 4 1.21x;
+// float32 B = 4 1.13x and B = 8 1.02x, within the scatter of the unchanged float64 B = 8
+// (0.82-1.04x). Records of two AVX-512 registers (float64 B = 8: 8 partial registers loaded and
+// stored a run) measured 0.81-0.89x in registers, so records of two registers keep the loop
+// (AVX2's float64 B = 4 and float32 B = 8 by that measurement, not their own).
+template <typename T, int B, std::size_t V>
+using CompiledRun =
+    std::conditional_t<k_record_bytes<T, B> <= V, RegisterRun, RecordRun<WideRecordAdd<V>>>;
+
 // The same for a run-time count's record of n values: in registers of `widest` bytes, pairs of
 // them first (8 replicas of float64 in AVX-512), then one, then a 32-byte one (AVX-512), the
 // values left in scalars. Each value is its own sum, so how the record is cut changes no bit.
@@ -305,15 +359,16 @@ template <typename T, bool Weighted, typename I>
 __attribute__((target("avx512f,avx512dq"))) void grouped_runs_avx512(const SegmentPass<T, I>& pass,
                                                                      const T* weights, int nb,
                                                                      NodeIndex r0, NodeIndex r1) {
-  scalar_segment_runs<T, 0, Weighted, I, GroupedRecordAdd<k_avx512_bytes>>(pass, weights, nb, r0,
-                                                                           r1);
+  scalar_segment_runs<T, 0, Weighted, I, RecordRun<GroupedRecordAdd<k_avx512_bytes>>>(pass, weights,
+                                                                                      nb, r0, r1);
 }
 
 template <typename T, bool Weighted, typename I>
 __attribute__((target("avx2"))) void grouped_runs_avx2(const SegmentPass<T, I>& pass,
                                                        const T* weights, int nb, NodeIndex r0,
                                                        NodeIndex r1) {
-  scalar_segment_runs<T, 0, Weighted, I, GroupedRecordAdd<k_avx2_bytes>>(pass, weights, nb, r0, r1);
+  scalar_segment_runs<T, 0, Weighted, I, RecordRun<GroupedRecordAdd<k_avx2_bytes>>>(pass, weights,
+                                                                                    nb, r0, r1);
 }
 
 template <typename T, typename I>
@@ -333,13 +388,14 @@ template <typename T, int B, bool Weighted, typename I>
 __attribute__((target("avx512f,avx512dq"))) void runs_avx512(const SegmentPass<T, I>& pass,
                                                              const T* weights, NodeIndex r0,
                                                              NodeIndex r1) {
-  scalar_segment_runs<T, B, Weighted, I, WideRecordAdd<k_avx512_bytes>>(pass, weights, B, r0, r1);
+  scalar_segment_runs<T, B, Weighted, I, CompiledRun<T, B, k_avx512_bytes>>(pass, weights, B, r0,
+                                                                            r1);
 }
 
 template <typename T, int B, bool Weighted, typename I>
 __attribute__((target("avx2"))) void runs_avx2(const SegmentPass<T, I>& pass, const T* weights,
                                                NodeIndex r0, NodeIndex r1) {
-  scalar_segment_runs<T, B, Weighted, I, WideRecordAdd<k_avx2_bytes>>(pass, weights, B, r0, r1);
+  scalar_segment_runs<T, B, Weighted, I, CompiledRun<T, B, k_avx2_bytes>>(pass, weights, B, r0, r1);
 }
 
 template <typename T, int B, typename I>

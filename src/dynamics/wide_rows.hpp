@@ -16,7 +16,8 @@
 // order: partial j over the row's entries j, j + 4, ... of its first 4 floor(d / 4), the last
 // d mod 4 into partial 0, every partial from +0.0, combined by finish_row
 // (tests/dynamics/test_wide_rows.cpp). A segment's runs are segment_runs.hpp's scalar loop with
-// each record added in these registers, to the carried partials in memory.
+// each record added in these registers, to the carried partials in memory, or, where a record
+// fills one register, the same additions with a run's four partials held in registers.
 #include "dynamics/row_kernel_args.hpp"
 #include "dynamics/segment_runs.hpp"
 #include "dynamics/sincos.hpp"

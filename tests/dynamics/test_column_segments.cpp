@@ -1,7 +1,7 @@
 // CSR segmenting of the sparse force kernel (dynamics/column_segments.hpp): the segmented walk
 // equals the unblocked one bit for bit, for forces and for whole trajectories, at segment widths
-// from one column to nearly all of them, 1 and 2 threads, float64 and float32, 1, 2, 3 and 8
-// replicas, 0/1 and weighted rows; on 2 ranks (label mpi) the same with ghost columns. The
+// from one column to nearly all of them, 1 and 2 threads, float64 and float32, 1 to 4, 8 and
+// 13 replicas, 0/1 and weighted rows; on 2 ranks (label mpi) the same with ghost columns. The
 // widths are forced small so that networks of a few hundred nodes take many segments.
 #include <omp.h>
 
@@ -75,7 +75,7 @@ TEST_CASE("segmented force equals the unblocked force bit for bit [ER N=603, wid
   for (const Network* net : {&plain, &heavy}) {
     const DistributedNetwork d(*net);
     for (const ForcePrecision precision : {ForcePrecision::float64, ForcePrecision::float32}) {
-      for (const int replicas : {1, 2, 3, 8, 13}) {
+      for (const int replicas : {1, 2, 3, 4, 8, 13}) {
         const RotorState s = state(d, replicas);
         const Evaluation unblocked = evaluate(d, precision, k_unsegmented, s);
         REQUIRE(unblocked.segments == 1);
