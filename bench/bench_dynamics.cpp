@@ -203,7 +203,7 @@ BENCHMARK(SegmentedStep)
 // where each core holds its L2 slice and the two share the L3 (docs/performance.md, "An Intel
 // Xeon's L3 is no core complex's"; 12 MiB: half a 48 MiB L3 over two threads).
 BENCHMARK(SegmentedTeamStep)
-    ->ArgsProduct({{1000000}, {100}, {1, 8}, {0, 1}, {0, 1024, 4096, 12288}, {2}})
+    ->ArgsProduct({{1000000}, {100}, {1, 8}, {0, 1}, {0, 1024, 2048, 4096, 12288}, {2}})
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 // N = 10^4 (its 160 KiB table in L2 whole) cut as N = 10^6 is (16 segments of ~6 entries a

@@ -106,8 +106,10 @@ NodeIndex automatic_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex r
   if (columns <= 0 || rows <= 0 || table <= static_cast<double>(caches.l2)) return k_unsegmented;
   if (rows_in_registers && record_bytes > k_max_segmented_record_bytes) return k_unsegmented;
   const bool in_l3 = slices_in_l3(caches);
-  const double slice = in_l3 ? static_cast<double>(caches.l3) / (2.0 * caches.l3_threads)
-                             : static_cast<double>(caches.l2) / 2;
+  const double l3 =
+      std::min(static_cast<double>(caches.l3), static_cast<double>(caches.l3_threads) *
+                                                   static_cast<double>(k_l3_thread_share_bytes));
+  const double slice = in_l3 ? l3 / (2.0 * caches.l3_threads) : static_cast<double>(caches.l2) / 2;
   const double degree = static_cast<double>(nnz) / static_cast<double>(rows);
   const double by_entries = std::floor(degree / k_min_entries_per_segment);
   const double segments = std::min(std::ceil(table / slice), by_entries);

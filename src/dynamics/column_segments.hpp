@@ -31,6 +31,16 @@ namespace hmfnet {
 /// complex's"), as 1 MiB slices beat 4 MiB ones on the one with 260 MiB.
 inline constexpr std::size_t k_near_l3_max_bytes = std::size_t{64} << 20;
 
+/// The L3 one thread can count on filling, whatever the core complex's L3 is said to hold: a
+/// host may leave a guest only part of an L3 it shares. On the AMD EPYC family 25 model 1 under
+/// KVM (512 KiB L2; sysfs: a 32 MiB L3 shared by the guest's 2 CPUs) one thread's sequential
+/// re-reads ran at L3 speed up to 8 MiB and at memory speed from 16 MiB (29.6 and 10.2 GB/s),
+/// two threads' up to 12 MiB of both; its slices of half the reported L3 (16 MiB a thread) ran
+/// ER N = 10^6, degree 100, float64 with one replica at 0.12 G/s against 0.20 in 4 MiB slices
+/// (docs/performance.md, "The L3 a guest can count on"). The AMD EPYC's 8 MiB core complex is
+/// within the cap and keeps its slices.
+inline constexpr std::size_t k_l3_thread_share_bytes = std::size_t{8} << 20;
+
 /// Whether the slices live in L3 (a core complex's, more than twice the L2 and below
 /// k_near_l3_max_bytes) rather than in L2.
 bool slices_in_l3(CacheSizes caches);
@@ -86,7 +96,8 @@ std::size_t segmented_bytes(EdgeOffset nnz, NodeIndex rows, int segments, NodeIn
 
 /// The rule: the whole column space (one segment) when the table, columns x record_bytes, fits
 /// in the L2; else as many segments as slices of half the cache they live in (slices_in_l3:
-/// the L3 where it is a core complex's own, shared by the team's threads, else the L2; at two
+/// the L3 where it is a core complex's own, shared by the team's threads and at most
+/// k_l3_thread_share_bytes a thread, else the L2; at two
 /// threads on the AMD EPYC, float64 with one replica ran 0.84x as fast as in the L2 rule's 1 MiB
 /// slices in slices of 4 MiB, 1.19x in 2 MiB; the other half holds the streams of
 /// column indices, run lengths and carried sums; 1 MiB slices measured faster than 512 KiB and

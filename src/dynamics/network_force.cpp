@@ -147,7 +147,7 @@ void segmented_rows_kernel(const RowKernelArgs<T>& a, const SegmentArgs<T>& sa, 
   const auto thread = static_cast<std::int64_t>(omp_get_thread_num());
   const NodeIndex panel = carried_rows(rows);
   const SincosIsa isa = sincos_isa();
-  const bool wide = wide_rows_serve<T>(nb, isa) || wide_groups_serve<T>(nb, isa);
+  const bool wide = wide_loops_serve<T>(nb, isa);
   for (std::int64_t p0 = 0; p0 < rows; p0 += panel) {
     const std::int64_t panel_rows = std::min<std::int64_t>(panel, rows - p0);
     const auto r0 = static_cast<NodeIndex>(p0 + panel_rows * thread / threads);
@@ -240,7 +240,7 @@ void dispatch(const RowKernelArgs<T>& a, NodeIndex rows, int b) {
 template <typename T>
 void run_kernel(const RowKernelArgs<T>& a, NodeIndex rows, int b) {
   const SincosIsa isa = sincos_isa();
-  if (wide_rows_serve<T>(b, isa) || wide_groups_serve<T>(b, isa)) {
+  if (wide_loops_serve<T>(b, isa)) {
     wide_rows(a, rows, b, isa);
     return;
   }
@@ -369,8 +369,7 @@ void NetworkForce::prepare_segments(NodeIndex rows, int replicas) {
   const std::size_t value_bytes = float64 ? sizeof(double) : sizeof(float);
   const SincosIsa isa = sincos_isa();
   const bool registers =
-      float64 ? wide_rows_serve<double>(replicas, isa) || wide_groups_serve<double>(replicas, isa)
-              : wide_rows_serve<float>(replicas, isa) || wide_groups_serve<float>(replicas, isa);
+      float64 ? wide_loops_serve<double>(replicas, isa) : wide_loops_serve<float>(replicas, isa);
   const NodeIndex width =
       m_segment_request != k_automatic_segments
           ? m_segment_request

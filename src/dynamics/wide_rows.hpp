@@ -38,6 +38,16 @@ bool wide_rows_serve(int replicas, SincosIsa isa);
 template <typename T>
 bool wide_groups_serve(int replicas, SincosIsa isa);
 
+/// Whether wide_rows and wide_segment_runs run `replicas` replicas of T in `isa` at all, in a
+/// version of their own (wide_rows_serve) or in groups (wide_groups_serve): every count but one
+/// replica (rows_kernel_single) and float32 with two (a 16-byte record, the baseline loops') in
+/// AVX2 or AVX-512. The one predicate the force's kernel choice, its segment rule and the tests
+/// read, so they cannot disagree on which loops run.
+template <typename T>
+bool wide_loops_serve(int replicas, SincosIsa isa) {
+  return wide_rows_serve<T>(replicas, isa) || wide_groups_serve<T>(replicas, isa);
+}
+
 /// The partial sums one walk of a row forms in the unblocked kernel that runs `replicas`
 /// replicas of T in `isa` (4: the row is walked once; 2: twice; 1: four times): wide_rows'
 /// version where wide_rows_serve, as many as keep their accumulators within half the register
@@ -47,14 +57,13 @@ bool wide_groups_serve(int replicas, SincosIsa isa);
 template <typename T>
 int row_walk_partials(int replicas, SincosIsa isa);
 
-/// Rows [0, rows) as rows_kernel forms them, in `isa`, where wide_rows_serve or
-/// wide_groups_serve: an orphaned
+/// Rows [0, rows) as rows_kernel forms them, in `isa`, where wide_loops_serve: an orphaned
 /// `omp for` (every thread of a team calls it; outside one, one thread does all the rows).
 template <typename T>
 void wide_rows(const RowKernelArgs<T>& a, NodeIndex rows, int replicas, SincosIsa isa);
 
 /// Rows [r0, r1) of one segment as scalar_segment_runs adds them (`weights`: the CSR's, nullptr
-/// on a 0/1 network), in `isa`, where wide_rows_serve or wide_groups_serve (the same records).
+/// on a 0/1 network), in `isa`, where wide_loops_serve (the same records).
 template <typename T, typename I>
 void wide_segment_runs(const SegmentPass<T, I>& pass, const T* weights, int replicas, NodeIndex r0,
                        NodeIndex r1, SincosIsa isa);

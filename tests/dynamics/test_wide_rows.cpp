@@ -158,13 +158,13 @@ TEST_CASE("the wide segment runs add as the scalar loop does, bit for bit", "[wi
     for (const int replicas : {2, 4, 8, 3, 5, 13, 16, 24}) {
       for (const bool weighted : {false, true}) {
         for (const NodeIndex origin : {0, 41}) {
-          if (wide_rows_serve<double>(replicas, isa) || wide_groups_serve<double>(replicas, isa)) {
+          if (wide_loops_serve<double>(replicas, isa)) {
             compare_runs<double, std::uint16_t>(isa, rows, narrow, replicas, weighted, origin, 99);
             compare_runs<double, NodeIndex>(isa, rows, wide, replicas, weighted, origin, origin);
             compare_runs<double, NodeIndex>(isa, rows, wide, replicas, weighted, origin, 120);
             ++versions;
           }
-          if (wide_rows_serve<float>(replicas, isa) || wide_groups_serve<float>(replicas, isa)) {
+          if (wide_loops_serve<float>(replicas, isa)) {
             compare_runs<float, std::uint16_t>(isa, rows, narrow, replicas, weighted, origin, 150);
             compare_runs<float, NodeIndex>(isa, rows, wide, replicas, weighted, origin, 77);
             ++versions;
@@ -219,4 +219,19 @@ TEST_CASE("the wide row loop sums as the definition, bit for bit", "[wide_rows]"
   CHECK_FALSE(wide_rows_serve<float>(2, SincosIsa::avx512));
   CHECK_FALSE(wide_rows_serve<double>(8, SincosIsa::baseline));
   CHECK_FALSE(wide_rows_serve<double>(3, SincosIsa::avx2));
+  // The predicate the force's kernel choice and segment rule read: every count but one replica
+  // and float32 with two, wherever the CPU runs the set; none in the baseline set.
+  for (const SincosIsa isa : {SincosIsa::avx2, SincosIsa::avx512}) {
+    const bool here = sincos_isa_available(isa);
+    CHECK_FALSE(wide_loops_serve<double>(1, isa));
+    CHECK_FALSE(wide_loops_serve<float>(1, isa));
+    CHECK_FALSE(wide_loops_serve<float>(2, isa));
+    for (int replicas = 2; replicas <= 24; ++replicas) {
+      INFO("replicas " << replicas);
+      CHECK(wide_loops_serve<double>(replicas, isa) == here);
+      if (replicas > 2) CHECK(wide_loops_serve<float>(replicas, isa) == here);
+    }
+  }
+  CHECK_FALSE(wide_loops_serve<double>(8, SincosIsa::baseline));
+  CHECK_FALSE(wide_loops_serve<float>(13, SincosIsa::baseline));
 }
