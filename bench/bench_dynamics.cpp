@@ -201,7 +201,8 @@ BENCHMARK(SegmentedStep)
     ->Unit(benchmark::kMillisecond);
 // Args: as SegmentedStep's, then threads: the slices against the rule's choice at two threads,
 // where each core holds its L2 slice and the two share the L3 (docs/performance.md, "An Intel
-// Xeon's L3 is no core complex's"; 12 MiB: half a 48 MiB L3 over two threads).
+// Xeon's L3 is no core complex's"; 12 MiB: half a 48 MiB L3 over two threads; 2 MiB beside the
+// rule's 4 MiB on the AMD EPYC family 25 model 1 guest, "The L3 a guest can count on").
 BENCHMARK(SegmentedTeamStep)
     ->ArgsProduct({{1000000}, {100}, {1, 8}, {0, 1}, {0, 1024, 2048, 4096, 12288}, {2}})
     ->UseRealTime()

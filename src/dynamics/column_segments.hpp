@@ -35,10 +35,10 @@ inline constexpr std::size_t k_near_l3_max_bytes = std::size_t{64} << 20;
 /// host may leave a guest only part of an L3 it shares. On the AMD EPYC family 25 model 1 under
 /// KVM (512 KiB L2; sysfs: a 32 MiB L3 shared by the guest's 2 CPUs) one thread's sequential
 /// re-reads ran at L3 speed up to 8 MiB and at memory speed from 16 MiB (29.6 and 10.2 GB/s),
-/// two threads' up to 12 MiB of both; its slices of half the reported L3 (16 MiB a thread) ran
-/// ER N = 10^6, degree 100, float64 with one replica at 0.12 G/s against 0.20 in 4 MiB slices
-/// (docs/performance.md, "The L3 a guest can count on"). The AMD EPYC's 8 MiB core complex is
-/// within the cap and keeps its slices.
+/// two threads' up to 12 MiB of both; slices of half the reported L3 (16 MiB a thread) left ER
+/// N = 10^6, degree 100, float64 with one replica unsegmented there, at 0.116 G/s against 0.199
+/// in 4 MiB slices (docs/performance.md, "The L3 a guest can count on"). The AMD EPYC's 8 MiB core
+/// complex is within the cap and keeps its slices.
 inline constexpr std::size_t k_l3_thread_share_bytes = std::size_t{8} << 20;
 
 /// Whether the slices live in L3 (a core complex's, more than twice the L2 and below

@@ -441,9 +441,10 @@ TEST_CASE(
   CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 8, guest, plenty) == 500'000);
   // float32, 4 replicas (32 B): 32 MB in 8 (carry 2 KB a row against 6.4 KB of lines).
   CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 32, guest, plenty) == 125'000);
-  // 64- and 128-byte records: 16 segments by the d / 6 cap, whose carry (8 KB, 16 KB a row) moves
-  // more than the lines it saves: unblocked (measured 2.1x and 1.6x faster there than in the 4
-  // and 8 slices of the uncapped L3).
+  // 64- and 128-byte records: 16 segments (64 MB in 4 MiB slices; 128 MB capped at d / 6), whose
+  // carry (8 KB, 16 KB a row) moves more than the lines it saves: unblocked (float32 and float64
+  // with 8 replicas measured 2.1x and 1.6x faster there than in the 4 and 8 slices of the
+  // uncapped L3).
   CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 64, guest, plenty) ==
         k_unsegmented);
   CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 128, guest, plenty) ==
@@ -468,8 +469,9 @@ TEST_CASE(
   CHECK(slices_in_l3(CacheSizes{socket.l2, socket.l3, 1, true}));
   const std::size_t plenty = std::size_t{64} << 30;
   // N = 10^6, degree 100, float64, one replica: a 16 MB table, which half that L3 would hold
-  // whole, in slices of 640 KiB, capped at 100 / 6 = 16 segments of 62,500 columns. Taken for a
-  // core complex's, the L3 would serve slices of half a thread's share of it (4 MiB: 4 segments).
+  // whole, in slices of 640 KiB of the L2, capped at 100 / 6 = 16 segments of 62,500 columns.
+  // Were the L3 a core complex's, its slices would be half a thread's share of it, not half of
+  // it (k_l3_thread_share_bytes: 4 MiB, 4 segments).
   CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 16, socket, plenty) == 62'500);
   CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 16,
                                 CacheSizes{socket.l2, socket.l3, 1, true}, plenty) == 250'000);
