@@ -12,7 +12,9 @@ rev=${1:-b72fe30}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 mkdir -p "$tmp/before/dynamics"
-for f in sincos.hpp sincos.cpp kernel_arithmetic.hpp; do
+for f in sincos.hpp sincos.cpp kernel_arithmetic.hpp vector_lanes.hpp; do
+  # vector_lanes.hpp joined the sincos after b72fe30: taken where REV has it.
+  git -C "$root" cat-file -e "$rev:src/dynamics/$f" 2>/dev/null || continue
   git -C "$root" show "$rev:src/dynamics/$f" >"$tmp/before/dynamics/$f"
 done
 # The Release build's flags and the ones src/CMakeLists.txt adds for sincos.cpp.

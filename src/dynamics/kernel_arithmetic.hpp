@@ -107,19 +107,22 @@ struct ScalarLane {
 /// cos and sin of each lane's angle (Lanes: ScalarLane, or sincos.cpp's vectors): Cody-Waite
 /// reduction by pi/2 in four parts with the rounding of the reduced angle carried, then Cephes'
 /// polynomials; below 1 ulp up to |x| = k_reduced_range (tests/dynamics/test_sincos.cpp). A lane
-/// whose |x| exceeds k_reduced_range (or is not finite) computes sin 0 instead; the caller
-/// overwrites it (sincos_block in sincos.cpp, sincos_one below).
+/// whose |x| exceeds k_reduced_range (or is not finite) computes values of no meaning (NaN for a
+/// non-finite angle); the caller overwrites them (sincos_block in sincos.cpp, the rank-one pass's
+/// outside_range in rank_one_fused.cpp, sincos_one below).
 template <typename Lanes>
 HMFNET_HD_INLINE void sincos_lanes(const typename Lanes::Real& angle, typename Lanes::Real& c,
                                    typename Lanes::Real& s) {
   using namespace sincos_constants;
   using Real = typename Lanes::Real;
   using Bits = typename Lanes::Bits;
-  const std::uint64_t range_bits = ScalarLane::bits(k_reduced_range);
-  // Integer comparison of |x|'s bits (a NaN's are above infinity's): a floating-point one may
-  // trap and then stays a branch.
-  const typename Lanes::Mask inside = Lanes::at_most(Lanes::bits(angle) & k_abs_mask, range_bits);
-  const Real x = Lanes::real(Lanes::select(inside, Lanes::bits(angle), Bits{}));
+  // Every lane reduces its own angle, one beyond the range too: its arithmetic then raises IEEE
+  // flags at most (no trap is enabled), and its values are overwritten. Selecting 0 for such
+  // lanes first put four integer operations at the head of every lane's chain of dependent
+  // operations, which bounds this code's rate (llvm-mca -mcpu=znver3: 45 cycles a 4-lane vector
+  // against a throughput bound of 14.5): the AVX2 version ran ~1.1x faster without them on the
+  // AMD EPYC family 25 model 1, the same bits (docs/performance.md, "The sincos's chain").
+  const Real& x = angle;
   const Real t = x * k_two_over_pi + k_round_shift;
   const Real q = t - k_round_shift;
   const Bits j = Lanes::bits(t);  // q mod 4 = j & 3
