@@ -108,8 +108,9 @@ struct ScalarLane {
 /// reduction by pi/2 in four parts with the rounding of the reduced angle carried, then Cephes'
 /// polynomials; below 1 ulp up to |x| = k_reduced_range (tests/dynamics/test_sincos.cpp). A lane
 /// whose |x| exceeds k_reduced_range (or is not finite) computes values of no meaning (NaN for a
-/// non-finite angle); the caller overwrites them (sincos_block in sincos.cpp, the rank-one pass's
-/// outside_range in rank_one_fused.cpp, sincos_one below).
+/// non-finite angle and for huge ones, whose reduced angle's square overflows); the caller
+/// overwrites them (sincos_block in sincos.cpp, the rank-one pass's outside_range in
+/// rank_one_fused.cpp, sincos_one below).
 template <typename Lanes>
 HMFNET_HD_INLINE void sincos_lanes(const typename Lanes::Real& angle, typename Lanes::Real& c,
                                    typename Lanes::Real& s) {
@@ -117,7 +118,9 @@ HMFNET_HD_INLINE void sincos_lanes(const typename Lanes::Real& angle, typename L
   using Real = typename Lanes::Real;
   using Bits = typename Lanes::Bits;
   // Every lane reduces its own angle, one beyond the range too: its arithmetic then raises IEEE
-  // flags at most (no trap is enabled), and its values are overwritten. Selecting 0 for such
+  // flags at most (hmfnet enables no trap; a host program that enables FE_INVALID or FE_OVERFLOW
+  // traps gets them for infinite and huge angles here, where glibc's sincos traps on infinities
+  // only), and its values are overwritten. Selecting 0 for such
   // lanes first put four integer operations at the head of every lane's chain of dependent
   // operations, which bounds this code's rate (llvm-mca -mcpu=znver3: 45 cycles a 4-lane vector
   // against a throughput bound of 14.5): the AVX2 version ran ~1.1x faster without them on the

@@ -19,7 +19,8 @@ using simd::store;
 
 // Where a new angle was beyond the sincos's reduced range (or not finite): its [cos, sin] from
 // the C library, as sincos_interleaved gives it, and the group's Z share summed again from the
-// stored values in the same order (the vector sums took the lanes' placeholder).
+// stored values in the same order (the vector sums took the lanes' meaningless values, NaN
+// among them).
 void outside_range(const RankOneFusedCells& f, std::size_t r0, std::size_t r1, std::size_t b0,
                    double* z_out) {
   const std::size_t w = f.replicas;

@@ -23,8 +23,8 @@ HMFNET_INLINE void sincos_block(const double* x, std::size_t n, double* cs) {
   using Real = typename Lanes::Real;
   constexpr std::size_t lanes = Lanes::k_lanes;
   const std::uint64_t range_bits = ScalarLane::bits(k_reduced_range);
-  // All ones in a lane while every angle it saw was within the reduced range (the mask
-  // sincos_lanes forms): the C library's pass below runs only when one was not.
+  // All ones in a lane while every angle it saw was within the reduced range (sincos_reduces'
+  // test, lane by lane): the C library's pass below runs only when one was not.
   typename Lanes::Mask inside = ~typename Lanes::Mask{};
   Real c;
   Real s;

@@ -111,10 +111,10 @@ TEST_CASE("scalar sincos equals the vectorised one at the doubles nearest k pi/2
 
 TEST_CASE("scalar sincos equals the vectorised one beyond the reduced range and when not finite",
           "[kernel_arithmetic]") {
-  // Both sides of k_reduced_range, the C library's range, and the values a lane mask must not let
-  // through: infinities, NaNs of both signs, zeros and a subnormal. Each value is also placed at
-  // every lane of the 4- and 8-lane vectors and in the padded tail after them (the mask is per
-  // lane).
+  // Both sides of k_reduced_range, the C library's range, and the values whose lanes compute
+  // nothing of use and must be overwritten: infinities, NaNs of both signs; zeros and a subnormal.
+  // Each value is also placed at every lane of the 4- and 8-lane vectors and in the padded tail
+  // after them (the range test is per lane).
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const std::vector<double> special = {k_reduced_range,
                                        -k_reduced_range,

@@ -191,7 +191,7 @@ TEST_CASE("The rank-one fused pass has the bits of the kick-drift pass and an ev
 TEST_CASE("The rank-one fused pass takes angles beyond the reduced range from the C library",
           "[rank_one_fused]") {
   // Every 97th angle times 10^9: beyond k_reduced_range (sincos.hpp), where the vector lanes
-  // compute a placeholder that the C library's value must replace before Z sums it.
+  // compute a meaningless value that the C library's must replace before Z sums it.
   for (const int threads : {1, 2}) {
     for (const int count : {8, 16}) {
       INFO(count << " replicas, " << threads << " threads");
