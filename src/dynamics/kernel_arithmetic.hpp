@@ -120,11 +120,11 @@ HMFNET_HD_INLINE void sincos_lanes(const typename Lanes::Real& angle, typename L
   // Every lane reduces its own angle, one beyond the range too: its arithmetic then raises IEEE
   // flags at most (hmfnet enables no trap; a host program that enables FE_INVALID or FE_OVERFLOW
   // traps gets them for infinite and huge angles here, where glibc's sincos traps on infinities
-  // only), and its values are overwritten. Selecting 0 for such
-  // lanes first put four integer operations at the head of every lane's chain of dependent
-  // operations, which bounds this code's rate (llvm-mca -mcpu=znver3: 45 cycles a 4-lane vector
-  // against a throughput bound of 14.5): the AVX2 version ran ~1.1x faster without them on the
-  // AMD EPYC family 25 model 1, the same bits (docs/performance.md, "The sincos's chain").
+  // only), and its values are overwritten. Selecting 0 for such lanes first put four integer
+  // operations at the head of every lane's chain of dependent operations, which bounds this
+  // code's rate (llvm-mca -mcpu=znver3: 45 cycles a 4-lane vector against a throughput bound of
+  // 14.5): the AVX2 version ran ~1.1x faster without them on the AMD EPYC family 25 model 1, the
+  // same bits (docs/performance.md, "The sincos's chain").
   const Real& x = angle;
   const Real t = x * k_two_over_pi + k_round_shift;
   const Real q = t - k_round_shift;
