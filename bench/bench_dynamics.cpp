@@ -196,7 +196,7 @@ BENCHMARK(YardstickStep)
 BENCHMARK(PlainCsrStep)->Args({10000, 100})->Unit(benchmark::kMillisecond);
 // Args: N, mean degree, replicas, precision, slice KiB (0: unsegmented).
 BENCHMARK(SegmentedStep)
-    ->ArgsProduct({{1000000}, {100}, {1, 8}, {0, 1}, {0, 512, 1024, 2048, 4096, 16384}})
+    ->ArgsProduct({{1000000}, {100}, {1, 4, 8}, {0, 1}, {0, 512, 1024, 2048, 4096, 16384}})
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 // Args: as SegmentedStep's, then threads: the slices against the rule's choice at two threads,
@@ -204,7 +204,7 @@ BENCHMARK(SegmentedStep)
 // Xeon's L3 is no core complex's"; 12 MiB: half a 48 MiB L3 over two threads; 2 MiB beside the
 // rule's 4 MiB on the AMD EPYC family 25 model 1 guest, "The L3 a guest can count on").
 BENCHMARK(SegmentedTeamStep)
-    ->ArgsProduct({{1000000}, {100}, {1, 8}, {0, 1}, {0, 1024, 2048, 4096, 12288}, {2}})
+    ->ArgsProduct({{1000000}, {100}, {1, 4, 8}, {0, 1}, {0, 1024, 2048, 4096, 12288}, {2}})
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 // N = 10^4 (its 160 KiB table in L2 whole) cut as N = 10^6 is (16 segments of ~6 entries a

@@ -33,7 +33,7 @@
 #define HMFNET_HD_INLINE __host__ __device__ __forceinline__
 #else
 #define HMFNET_HD
-// Always inlined on the host: sincos.cpp instantiates the sincos template on 4-lane vectors
+// Always inlined on the host: sincos.cpp instantiates the sincos template on vectors of lanes
 // inside functions compiled for different instruction sets (sincos.cpp: sincos_block).
 #define HMFNET_HD_INLINE inline __attribute__((always_inline))
 #endif

@@ -15,7 +15,7 @@ namespace hmfnet {
 namespace {
 
 using simd::Lanes4;
-using simd::Lanes8;
+using simd::Lanes8Twice;
 using simd::store_interleaved;
 
 template <typename Lanes>
@@ -58,7 +58,10 @@ void sincos_block_baseline(const double* x, std::size_t n, double* cs) {
   sincos_block<Lanes4>(x, n, cs);
 }
 
-// The same code for AVX2 (4 lanes in one register) and AVX-512 (8 lanes in one register): the
+// The same code for AVX2 (4 lanes in one register) and AVX-512 (16 lanes in two registers side by
+// side, simd::TwiceLanes: two chains in flight, 1.16-1.20x one register on the AMD EPYC family 25
+// model 17, where two AVX2 registers ran 0.43-0.46x one for want of registers and four AVX-512
+// ones 1.08-1.13x; docs/performance.md, "The AVX-512 sincos in two registers"): the
 // same IEEE operations in the same order and no FMA (contraction is off for this file, whatever
 // the target brings), so the same bits; tests/dynamics/test_sincos.cpp compares every version
 // this CPU runs with the baseline and with sincos_one. GCC and Clang on x86-64 only.
@@ -69,7 +72,7 @@ __attribute__((target("avx2"))) void sincos_block_avx2(const double* x, std::siz
 }
 __attribute__((target("avx512f,avx512dq"))) void sincos_block_avx512(const double* x, std::size_t n,
                                                                      double* cs) {
-  sincos_block<Lanes8>(x, n, cs);
+  sincos_block<Lanes8Twice>(x, n, cs);
 }
 #endif
 

@@ -5,16 +5,16 @@
 //
 // glibc's scalar sincos costs ~15-24 ns per angle on the development machine: ~16% of a leap-frog
 // step on ER N = 10^4, degree 100, more than the gathers at degree <= 20, and ~70% of the
-// rank-one force on the complete graph. This one computes four or eight angles at once with no
+// rank-one force on the complete graph. This one computes four or sixteen angles at once with no
 // branch (GCC/Clang vector types: two SSE2 registers on the x86-64 baseline, one AVX2 register, or
-// eight lanes in one AVX-512 register, chosen at run time): Cody-Waite reduction by pi/2 in four
-// parts with the rounding of the reduced angle carried, then minimax polynomials on [-pi/4, pi/4].
-// Its error is below 1 ulp up to |x| = 10^7, also at the doubles nearest multiples of pi/2
-// (tests/dynamics/ test_sincos.cpp); angles beyond k_reduced_range, and non-finite ones, go to the
-// C library. The per-lane arithmetic is kernel_arithmetic.hpp's sincos_lanes, one template that
-// these vectors, the scalar sincos_one and a CUDA device instantiate alike. bench/ensemble_table.sh
-// prints its time per angle beside glibc's; bench/sincos_table.sh each version's beside SLEEF's and
-// numpy's (docs/performance.md "sincos").
+// two AVX-512 registers of eight lanes side by side, chosen at run time): Cody-Waite reduction by
+// pi/2 in four parts with the rounding of the reduced angle carried, then minimax polynomials on
+// [-pi/4, pi/4]. Its error is below 1 ulp up to |x| = 10^7, also at the doubles nearest multiples
+// of pi/2 (tests/dynamics/ test_sincos.cpp); angles beyond k_reduced_range, and non-finite ones, go
+// to the C library. The per-lane arithmetic is kernel_arithmetic.hpp's sincos_lanes, one template
+// that these vectors, the scalar sincos_one and a CUDA device instantiate alike.
+// bench/ensemble_table.sh prints its time per angle beside glibc's; bench/sincos_table.sh each
+// version's beside SLEEF's and numpy's (docs/performance.md "sincos").
 //
 // Reproducibility: for |x| <= k_reduced_range an angle's [cos, sin] depends on its value only,
 // never on where it sits in the array (vector body or padded tail), on the thread that computes
@@ -33,8 +33,8 @@ namespace hmfnet {
 inline constexpr double k_reduced_range = 1e7;
 
 /// The instruction sets sincos_interleaved has a version for, narrowest first: the x86-64
-/// baseline (SSE2, 4 lanes in two registers), AVX2 (4 lanes in one) and AVX-512F/DQ (8 lanes in
-/// one). All give the same bits (see above).
+/// baseline (SSE2, 4 lanes in two registers), AVX2 (4 lanes in one) and AVX-512F/DQ (16 lanes in
+/// two, side by side). All give the same bits (see above).
 enum class SincosIsa { baseline, avx2, avx512 };
 
 /// The version sincos_interleaved runs: the widest this CPU has, or, where the environment

@@ -12,7 +12,8 @@
 namespace hmfnet::simd {
 
 // Lanes in GCC/Clang vector types: four for the x86-64 baseline (two SSE2 registers) and AVX2
-// (one register), eight for AVX-512 (one register). Every lane does the same IEEE operations as
+// (one register), eight for AVX-512 (one register; the sincos takes two side by side,
+// TwiceLanes below). Every lane does the same IEEE operations as
 // every other, and the tail is computed in a padded vector, so an angle's bits never depend on
 // its place in the array or on the vector width.
 using VecD4 = double __attribute__((vector_size(4 * sizeof(double))));
@@ -72,6 +73,74 @@ struct VectorLanes {
 using Lanes4 = VectorLanes<VecD4, VecU4, false>;
 using Lanes8 = VectorLanes<VecD8, VecU8, true>;
 
+// Two registers of lanes side by side: each operation of the sincos template applied to both in
+// adjacent instructions, so that two independent chains of dependent operations are in flight
+// in the FP scheduler at once (the sincos's chain is ~70 cycles long; docs/performance.md, "The
+// AVX-512 sincos in two registers"). Every lane does the same IEEE operations as in one
+// register: the same bits.
+template <typename V>
+struct Twice {
+  V lo;
+  V hi;
+  HMFNET_INLINE auto operator[](std::size_t l) const {
+    constexpr std::size_t half = sizeof(V) / sizeof(lo[0]);
+    return l < half ? lo[l] : hi[l - half];
+  }
+  HMFNET_INLINE Twice& operator&=(const Twice& o) {
+    lo &= o.lo;
+    hi &= o.hi;
+    return *this;
+  }
+};
+
+template <typename V>
+HMFNET_INLINE Twice<V> operator~(const Twice<V>& a) {
+  return {~a.lo, ~a.hi};
+}
+
+// Both operands side by side, or one side by side with a scalar (a constant of the template).
+#define HMFNET_TWICE_OPERATOR(op)                                                         \
+  template <typename V>                                                                   \
+  HMFNET_INLINE Twice<V> operator op(const Twice<V>& a, const Twice<V>& b) {              \
+    return {a.lo op b.lo, a.hi op b.hi};                                                  \
+  }                                                                                       \
+  template <typename V, typename S, typename = std::enable_if_t<std::is_arithmetic_v<S>>> \
+  HMFNET_INLINE Twice<V> operator op(const Twice<V>& a, S b) {                            \
+    return {a.lo op b, a.hi op b};                                                        \
+  }                                                                                       \
+  template <typename V, typename S, typename = std::enable_if_t<std::is_arithmetic_v<S>>> \
+  HMFNET_INLINE Twice<V> operator op(S a, const Twice<V>& b) {                            \
+    return {a op b.lo, a op b.hi};                                                        \
+  }
+HMFNET_TWICE_OPERATOR(+)
+HMFNET_TWICE_OPERATOR(-)
+HMFNET_TWICE_OPERATOR(*)
+HMFNET_TWICE_OPERATOR(&)
+HMFNET_TWICE_OPERATOR(^)
+HMFNET_TWICE_OPERATOR(<<)
+#undef HMFNET_TWICE_OPERATOR
+
+// The lanes of two registers of L side by side, for the sincos template.
+template <typename L>
+struct TwiceLanes {
+  using Real = Twice<typename L::Real>;
+  using Bits = Twice<typename L::Bits>;
+  using Mask = Twice<typename L::Mask>;
+  static constexpr std::size_t k_lanes = 2 * L::k_lanes;
+  static HMFNET_INLINE Bits bits(const Real& x) { return {L::bits(x.lo), L::bits(x.hi)}; }
+  static HMFNET_INLINE Real real(const Bits& b) { return {L::real(b.lo), L::real(b.hi)}; }
+  static HMFNET_INLINE Mask at_most(const Bits& a, std::uint64_t b) {
+    return {L::at_most(a.lo, b), L::at_most(a.hi, b)};
+  }
+  static HMFNET_INLINE Mask odd(const Bits& a) { return {L::odd(a.lo), L::odd(a.hi)}; }
+  static HMFNET_INLINE Bits select(const Mask& m, const Bits& a, const Bits& b) {
+    return {L::select(m.lo, a.lo, b.lo), L::select(m.hi, a.hi, b.hi)};
+  }
+};
+using Lanes8Twice = TwiceLanes<Lanes8>;
+// Two registers with nothing between them: memcpy of consecutive doubles in and out is exact.
+static_assert(sizeof(Twice<VecD8>) == 2 * sizeof(VecD8), "no padding between the registers");
+
 // [c0, s0, c1, s1, ...] as two vectors of the lanes' width: register shuffles (unpack and
 // permute) instead of one scalar store per value, which cost ~1 ns an angle in the AVX2 version.
 HMFNET_INLINE void store_interleaved(const VecD4& c, const VecD4& s, double* cs) {
@@ -86,6 +155,12 @@ HMFNET_INLINE void store_interleaved(const VecD8& c, const VecD8& s, double* cs)
   const VecD8 hi = __builtin_shufflevector(c, s, 4, 12, 5, 13, 6, 14, 7, 15);
   std::memcpy(cs, &lo, sizeof lo);
   std::memcpy(cs + 8, &hi, sizeof hi);
+}
+
+template <typename V>
+HMFNET_INLINE void store_interleaved(const Twice<V>& c, const Twice<V>& s, double* cs) {
+  store_interleaved(c.lo, s.lo, cs);
+  store_interleaved(c.hi, s.hi, cs + 2 * sizeof(V) / sizeof(double));
 }
 
 // A vector from / to consecutive doubles (any alignment).
