@@ -60,11 +60,11 @@ void sincos_block_baseline(const double* x, std::size_t n, double* cs) {
 
 // The same code for AVX2 (4 lanes in one register) and AVX-512 (16 lanes in two registers side by
 // side, simd::TwiceLanes: two chains in flight, 1.16-1.20x one register on the AMD EPYC family 25
-// model 17, where two AVX2 registers ran 0.43-0.46x one for want of registers and four AVX-512
-// ones 1.08-1.13x; docs/performance.md, "The AVX-512 sincos in two registers"): the
-// same IEEE operations in the same order and no FMA (contraction is off for this file, whatever
-// the target brings), so the same bits; tests/dynamics/test_sincos.cpp compares every version
-// this CPU runs with the baseline and with sincos_one. GCC and Clang on x86-64 only.
+// model 17, where two AVX2 registers ran 0.72x one (3.8-3.9 against 2.7-2.8 ns) for want of
+// registers and four AVX-512 ones 1.08-1.13x; docs/performance.md, "The AVX-512 sincos in two
+// registers"): the same IEEE operations in the same order and no FMA (contraction is off for this
+// file, whatever the target brings), so the same bits; tests/dynamics/test_sincos.cpp compares
+// every version this CPU runs with the baseline and with sincos_one. GCC and Clang on x86-64 only.
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define HMFNET_SINCOS_X86 1
 __attribute__((target("avx2"))) void sincos_block_avx2(const double* x, std::size_t n, double* cs) {

@@ -10,7 +10,7 @@
 // two AVX-512 registers of eight lanes side by side, chosen at run time): Cody-Waite reduction by
 // pi/2 in four parts with the rounding of the reduced angle carried, then minimax polynomials on
 // [-pi/4, pi/4]. Its error is below 1 ulp up to |x| = 10^7, also at the doubles nearest multiples
-// of pi/2 (tests/dynamics/ test_sincos.cpp); angles beyond k_reduced_range, and non-finite ones, go
+// of pi/2 (tests/dynamics/test_sincos.cpp); angles beyond k_reduced_range, and non-finite ones, go
 // to the C library. The per-lane arithmetic is kernel_arithmetic.hpp's sincos_lanes, one template
 // that these vectors, the scalar sincos_one and a CUDA device instantiate alike.
 // bench/ensemble_table.sh prints its time per angle beside glibc's; bench/sincos_table.sh each

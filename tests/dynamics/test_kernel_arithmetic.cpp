@@ -113,8 +113,8 @@ TEST_CASE("scalar sincos equals the vectorised one beyond the reduced range and 
           "[kernel_arithmetic]") {
   // Both sides of k_reduced_range, the C library's range, and the values whose lanes compute
   // nothing of use and must be overwritten: infinities, NaNs of both signs; zeros and a subnormal.
-  // Each value is also placed at every lane of the 4- and 8-lane vectors and in the padded tail
-  // after them (the range test is per lane).
+  // Each value is also placed at every lane of the 4-lane vectors and the 16 lanes of the AVX-512
+  // version's two registers, and in the padded tail after them (the range test is per lane).
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const std::vector<double> special = {k_reduced_range,
                                        -k_reduced_range,
@@ -133,7 +133,7 @@ TEST_CASE("scalar sincos equals the vectorised one beyond the reduced range and 
                                        -0.0,
                                        1e-310};
   for (const double v : special) {
-    std::vector<double> x(9, 0.5);
+    std::vector<double> x(17, 0.5);
     for (std::size_t lane = 0; lane < x.size(); ++lane) {
       x[lane] = v;
       require_same_sincos(x);
