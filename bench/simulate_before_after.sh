@@ -5,8 +5,9 @@
 # results are the same: every dataset of the results files (the time series, each K's point,
 # node data where asked) bit for bit, and the attributes steps and force_evaluations. For
 # changes that the benchmarks' single step() does not see (what a whole run forms, samples or
-# skips). Timing runs want few records (--record-stride 1000000); a results check, many. Idle
-# machine only. PYTHON: a python3 with numpy and h5py (Debian's /usr/bin/python3 has them).
+# skips), and each run's peak resident memory and the trials that chose its thread count and
+# column segments. Timing runs want few records (--record-stride 1000000); a results check,
+# many. Idle machine only. PYTHON: a python3 with numpy and h5py (Debian's /usr/bin/python3 has them).
 # Usage: bench/simulate_before_after.sh OLD_HMFNET NEW_HMFNET ROUNDS NETWORK SIMULATE_ARGS...
 #   e.g. bench/simulate_before_after.sh /tmp/old/hmfnet build/bin/hmfnet 3 kn400.h5 --replicas 16
 #          --K-over-Kc 1.5 --h 0.1 --T 3000 --transient 2980 --seed 1 --threads 1
@@ -61,4 +62,10 @@ print("ns per rotor-step: old %.3f new %.3f  old / new %.2fx  rounds %s  threads
                       " / ".join("%.2f" % (a / b) for a, b in zip(t_old, t_new)),
                       old[0]["threads"], new[0]["threads"],
                       "the same" if not bad else "DIFFER: " + ", ".join(bad)))
+for label, runs in (("old", old), ("new", new)):
+    print("%s: peak RSS MB %s; trials %s" % (
+        label, " / ".join("%.1f" % max(d["peak_rss_mb_per_rank"]) for d in runs),
+        " / ".join("[threads: %s; segments: %s]" % (d.get("thread_trial") or "none",
+                                                    d.get("segment_trial") or "none")
+                   for d in runs)))
 PY

@@ -6,7 +6,7 @@
 # run so the ratios are comparable. Prints the integration loop's rate (work * steps per second,
 # as the CLI reports it: stored entries x replicas for ER, rows x replicas for K_N; G/s), the
 # rule's work per step (gathers + k_row_work per row, x replicas), the threads the default chose,
-# whether it chose them by timing its first steps (src/dynamics/thread_trial.hpp; short runs and
+# whether it chose them by timing its first steps (src/dynamics/step_trial.hpp; short runs and
 # runs over several ranks keep the rule's count) and default / best; then one thread's step time
 # (us), what a second thread adds to a step beyond half of it (us) and one thread's time per unit
 # of the rule's work (ns).

@@ -81,6 +81,7 @@ void write_results_file(const SimulateRequest& r, const SimulateOutcome& o,
   prov["ranks"] = o.ranks;
   prov["threads"] = o.threads;
   if (!o.thread_trial.empty()) prov["thread_trial"] = o.thread_trial;
+  if (!o.segment_trial.empty()) prov["segment_trial"] = o.segment_trial;
   prov["device"] = o.device;
   prov["peak_rss_mb_per_rank"] = o.peak_rss_mb_per_rank;
   prov["wall_seconds"] =
@@ -158,6 +159,7 @@ SimulateOutcome run_simulation(const SimulateRequest& r, const DistributedInput&
   o.threads = result.threads;
   o.thread_rule_work = result.thread_rule_work;
   o.thread_trial = result.thread_trial;
+  o.segment_trial = result.segment_trial;
   o.ranks = ParallelSession::ranks();
   o.peak_rss_mb_per_rank = ParallelSession::peak_memory_mb();
   o.ghosts_per_rank.assign(static_cast<std::size_t>(o.ranks), 0.0);

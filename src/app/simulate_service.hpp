@@ -50,7 +50,8 @@ struct SimulateOutcome {
   bool resumed = false;
   int threads = 1;
   std::int64_t thread_rule_work = 0;
-  std::string thread_trial;  ///< SimulationResult::thread_trial
+  std::string thread_trial;   ///< SimulationResult::thread_trial
+  std::string segment_trial;  ///< SimulationResult::segment_trial
   int ranks = 1;
   std::vector<double> peak_rss_mb_per_rank;
   /// What each force evaluation imports: [cos, sin] of every lane for each ghost column
@@ -79,6 +80,7 @@ void visit_report_fields(Visitor& v, const SimulateOutcome& o) {
   v.field("threads", o.threads);
   v.field("thread_rule_work", o.thread_rule_work);
   v.field("thread_trial", o.thread_trial);
+  v.field("segment_trial", o.segment_trial);
   v.field("ranks", o.ranks);
   v.field("peak_rss_mb_per_rank", o.peak_rss_mb_per_rank);
   v.field("ghosts_per_rank", o.ghosts_per_rank);

@@ -99,12 +99,21 @@ std::size_t segmented_bytes(EdgeOffset nnz, NodeIndex rows, int segments, NodeIn
          panel * sizeof(std::uint32_t);
 }
 
-NodeIndex automatic_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex rows,
-                                  std::size_t record_bytes, CacheSizes caches,
-                                  std::size_t memory_bytes, bool rows_in_registers) {
+namespace {
+
+/// The rule's cut before it weighs the carry: the width of its slices (k_unsegmented where the
+/// table fits in the L2, the records are too long, fewer than two segments are left or the
+/// memory would not allow them), and whether the carry pays for them.
+struct RuleCut {
+  NodeIndex width = k_unsegmented;
+  bool carry_pays = true;
+};
+
+RuleCut rule_cut(NodeIndex columns, EdgeOffset nnz, NodeIndex rows, std::size_t record_bytes,
+                 CacheSizes caches, std::size_t memory_bytes, bool rows_in_registers) {
   const auto table = static_cast<double>(columns) * static_cast<double>(record_bytes);
-  if (columns <= 0 || rows <= 0 || table <= static_cast<double>(caches.l2)) return k_unsegmented;
-  if (rows_in_registers && record_bytes > k_max_segmented_record_bytes) return k_unsegmented;
+  if (columns <= 0 || rows <= 0 || table <= static_cast<double>(caches.l2)) return {};
+  if (rows_in_registers && record_bytes > k_max_segmented_record_bytes) return {};
   const bool in_l3 = slices_in_l3(caches);
   const double l3 =
       std::min(static_cast<double>(caches.l3), static_cast<double>(caches.l3_threads) *
@@ -113,14 +122,31 @@ NodeIndex automatic_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex r
   const double degree = static_cast<double>(nnz) / static_cast<double>(rows);
   const double by_entries = std::floor(degree / k_min_entries_per_segment);
   const double segments = std::min(std::ceil(table / slice), by_entries);
-  if (segments < 2) return k_unsegmented;
-  if (in_l3 && !carry_pays(segments, degree, record_bytes)) return k_unsegmented;
+  if (segments < 2) return {};
   const auto width = static_cast<NodeIndex>(std::ceil(static_cast<double>(columns) / segments));
   if (segmented_bytes(nnz, rows, static_cast<int>(segments), width, record_bytes) >
       memory_bytes / 2) {
-    return k_unsegmented;
+    return {};
   }
-  return width;
+  return {width, !in_l3 || carry_pays(segments, degree, record_bytes)};
+}
+
+}  // namespace
+
+NodeIndex automatic_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex rows,
+                                  std::size_t record_bytes, CacheSizes caches,
+                                  std::size_t memory_bytes, bool rows_in_registers) {
+  const RuleCut cut =
+      rule_cut(columns, nnz, rows, record_bytes, caches, memory_bytes, rows_in_registers);
+  return cut.carry_pays ? cut.width : k_unsegmented;
+}
+
+NodeIndex trial_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex rows,
+                              std::size_t record_bytes, CacheSizes caches, std::size_t memory_bytes,
+                              bool rows_in_registers) {
+  const RuleCut cut =
+      rule_cut(columns, nnz, rows, record_bytes, caches, memory_bytes, rows_in_registers);
+  return cut.carry_pays ? k_unsegmented : cut.width;
 }
 
 ColumnSegments::ColumnSegments(const std::vector<EdgeOffset>& row_ptr,

@@ -118,6 +118,19 @@ NodeIndex automatic_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex r
                                   std::size_t record_bytes, CacheSizes caches,
                                   std::size_t memory_bytes, bool rows_in_registers = true);
 
+/// The slices in L3 that automatic_segment_width left unblocked only because the carried sums
+/// would move more bytes than the gathered lines they save, both counted from memory: their
+/// width, else k_unsegmented. Where a guest's L3 holds the slices beside the streams the carry
+/// comes from L3 instead, and 64-byte records ran 1.5-2.3x faster in those slices (ER N = 10^6,
+/// degree 100, the AMD EPYC family 25 model 17 guest); on a guest that reports the same caches
+/// but holds less of them (family 25 model 1) they ran 1.2-2.2x slower (docs/performance.md,
+/// "64-byte records on the AMD EPYC family 25 model 17"). No reading of the caches told the two
+/// apart, so a run times both on its first steps (NetworkForce::segment_candidates,
+/// step_trial.hpp).
+NodeIndex trial_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex rows,
+                              std::size_t record_bytes, CacheSizes caches, std::size_t memory_bytes,
+                              bool rows_in_registers = true);
+
 /// Segments of at most this many columns keep their column indices in 16 bits, relative to the
 /// segment's first column: half the copy's bytes (200 MB instead of 400 at ER N = 10^6, degree
 /// 100). The automatic rule's widths there: 62,500 columns for float64 (one replica: slices of

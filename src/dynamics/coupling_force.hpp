@@ -70,6 +70,14 @@ class CouplingForce {
   /// The work of one row and replica besides its gathers, in the thread rule's units
   /// (thread_choice.hpp: k_row_work for a sparse row, k_rank_one_row_work for the rank-one force).
   virtual std::int64_t row_work() const { return k_row_work; }
+  /// Column segment counts the evaluations could run in, the same bits in each, where the force's
+  /// own rule cannot tell which runs faster on this machine (NetworkForce: trial_segment_width),
+  /// the rule's first; empty where there is nothing to try. For the shape of the last prepare and
+  /// the team size then. A run times its first steps in each (step_trial.hpp).
+  virtual std::vector<int> segment_candidates() const { return {}; }
+  /// The evaluations from the next prepare on run in `count` segments, one of
+  /// segment_candidates(); the rule's count again where `count` is the first of them.
+  virtual void use_segments(int /*count*/) {}
   /// Short name for logs and output files ("sparse", "rank-one").
   virtual const char* name() const = 0;
   /// y_n = sum_m A_nm e^{i theta_m} of the last evaluation, rows x replicas x [Re, Im]

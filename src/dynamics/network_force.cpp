@@ -370,12 +370,20 @@ void NetworkForce::prepare_segments(NodeIndex rows, int replicas) {
   const SincosIsa isa = sincos_isa();
   const bool registers =
       float64 ? wide_loops_serve<double>(replicas, isa) : wide_loops_serve<float>(replicas, isa);
-  const NodeIndex width =
-      m_segment_request != k_automatic_segments
-          ? m_segment_request
-          : automatic_segment_width(m_adjacency.columns, m_nnz, rows,
-                                    2 * static_cast<std::size_t>(replicas) * value_bytes,
-                                    this_cpu_caches(threads), available_memory_bytes(), registers);
+  NodeIndex width = m_segment_request;
+  m_trial_width = k_unsegmented;
+  if (m_segment_request == k_automatic_segments) {
+    const std::size_t record = 2 * static_cast<std::size_t>(replicas) * value_bytes;
+    CacheSizes caches = this_cpu_caches(threads);
+    if (m_caches)
+      caches = CacheSizes{m_caches->l2, m_caches->l3, threads, m_caches->l3_core_complex};
+    const std::size_t memory = available_memory_bytes();
+    width = automatic_segment_width(m_adjacency.columns, m_nnz, rows, record, caches, memory,
+                                    registers);
+    m_trial_width =
+        trial_segment_width(m_adjacency.columns, m_nnz, rows, record, caches, memory, registers);
+    if (m_use_trial_width && m_trial_width != k_unsegmented) width = m_trial_width;
+  }
   if (width != m_segment_width) {
     cut(width);
     m_segment_width = width;
@@ -389,6 +397,18 @@ void NetworkForce::prepare_segments(NodeIndex rows, int replicas) {
   m_segmented_rows = rows;
   m_segmented_replicas = replicas;
   m_segmented_threads = threads;
+}
+
+std::vector<int> NetworkForce::segment_candidates() const {
+  if (m_trial_width == k_unsegmented) return {};
+  const std::int64_t columns = m_adjacency.columns;
+  return {1, static_cast<int>((columns + m_trial_width - 1) / m_trial_width)};
+}
+
+void NetworkForce::use_segments(int count) {
+  const bool trial = count != 1;
+  if (trial != m_use_trial_width) m_segmented_rows = -1;  // the next prepare decides again
+  m_use_trial_width = trial;
 }
 
 void NetworkForce::prepare(const RotorState& state, std::vector<double>& g, ForceSums& sums) {

@@ -15,6 +15,7 @@
 // (column_segments.hpp: CSR segmenting), with the same additions in the same order: the same
 // bits as the unblocked walk, for any segment width.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "core/cache_aligned.hpp"
@@ -50,6 +51,17 @@ class NetworkForce : public CouplingForce {
     return m_precision == ForcePrecision::float64 ? "sparse" : "sparse-float32";
   }
   ForcePrecision precision() const { return m_precision; }
+  /// {1, the trial width's segments} where the rule left the rows unblocked for the carry alone
+  /// (trial_segment_width), at the last prepare's shape; empty otherwise, and for a given width.
+  std::vector<int> segment_candidates() const override;
+  void use_segments(int count) override;
+  /// The caches the segment rules read from the next prepare on, instead of this CPU's
+  /// (this_cpu_caches), with the team's size as l3_threads: another machine's, for tests and
+  /// benchmarks.
+  void read_caches_as(CacheSizes caches) {
+    m_caches = caches;
+    m_segmented_rows = -1;
+  }
   /// Column segments of the last prepare (1: unblocked).
   int segments() const { return m_segments.count(); }
   /// Bytes the segmented walk holds: the segments and the carried sums (besides the network's
@@ -93,8 +105,11 @@ class NetworkForce : public CouplingForce {
   std::vector<float> m_weights_f32;        // float32: the stored weights (empty for 0/1)
   CacheAlignedVector<float> m_column_f32;  // float32: the gathered table
   NodeIndex m_segment_request;
-  NodeIndex m_segment_width = -1;   // the width m_segments was cut with (-1: not yet)
-  NodeIndex m_segmented_rows = -1;  // the shape prepare_segments last decided for
+  NodeIndex m_segment_width = -1;           // the width m_segments was cut with (-1: not yet)
+  std::optional<CacheSizes> m_caches;       // read_caches_as, else this CPU's
+  NodeIndex m_trial_width = k_unsegmented;  // trial_segment_width at the last decided shape
+  bool m_use_trial_width = false;           // use_segments: cut at m_trial_width
+  NodeIndex m_segmented_rows = -1;          // the shape prepare_segments last decided for
   int m_segmented_replicas = -1;
   int m_segmented_threads = -1;
   ColumnSegments m_segments;

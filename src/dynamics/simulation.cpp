@@ -20,9 +20,9 @@
 #include "dynamics/replica_lanes.hpp"
 #include "dynamics/segment_state.hpp"
 #include "dynamics/series_recorder.hpp"
+#include "dynamics/step_trial.hpp"
 #include "dynamics/stepper_choice.hpp"
 #include "dynamics/thread_choice.hpp"
-#include "dynamics/thread_trial.hpp"
 #include "dynamics/time_average.hpp"
 #include "parallel/network_content_hash.hpp"
 #include "parallel/parallel_session.hpp"
@@ -35,7 +35,7 @@ using Clock = std::chrono::steady_clock;
 
 std::int64_t steps_for(double time, double h) { return std::llround(time / h); }
 
-// The default count's trial (thread_trial.hpp; simulate: thread_trial). A sample is
+// The default count's trial (step_trial.hpp; simulate: thread_trial). A sample is
 // k_trial_sample_work units of the rule's work (1-6 ms at 0.25-1.5 ns a unit); a step of more
 // keeps the rule's count, 2 threads or more there under either wait policy (every measured
 // network of 4 10^6 units and more ran 1.6-2.0x faster on 2 threads than on 1 on both machines:
@@ -47,9 +47,15 @@ constexpr int k_trial_samples = 3;
 constexpr double k_trial_share = 40.0;
 
 /// Whether a whole `trial` takes at most 1 / k_trial_share of `steps_left`.
-bool trial_fits(const ThreadTrial& trial, double steps_left) {
+bool trial_fits(const StepTrial& trial, double steps_left) {
   return static_cast<double>(trial.steps()) * k_trial_share <= steps_left;
 }
+
+// The segments' trial (NetworkForce::segment_candidates): a sample is k_trial_sample_work
+// stored entries x lanes a step, at least one step. Where there is a choice a step gathers
+// 10^6 lines and more (a table beyond 8 MiB of 64-byte records, 12 entries a row and more), so
+// its samples are single steps of milliseconds to a second: the untimed step before each holds
+// the force's new cut of its columns (at ER N = 10^6, degree 100, a copy of 10^8 indices).
 
 /// Steps of the whole schedule, every segment.
 double total_steps(const SimulationParameters& p) {
@@ -106,7 +112,7 @@ class Run {
   /// replica at the schedule's K. `identity`: the parameters the checkpoint's fingerprint names.
   Run(const DistributedNetwork& network, const std::vector<double>& degrees, CouplingForce& force,
       std::unique_ptr<EnsembleStepper> stepper, const SimulationParameters& params,
-      std::vector<double> lane_K, const SimulationParameters& identity, ThreadTrial trial)
+      std::vector<double> lane_K, const SimulationParameters& identity, StepTrial trial)
       : m_network(network),
         m_force(force),
         m_stepper(std::move(stepper)),
@@ -153,6 +159,10 @@ class Run {
   void finish(bool interrupted);
   void restore(const Checkpoint& c);
   std::int64_t rotor_samples() const;
+  void consider_segment_trial();
+  /// Every chunk of a trial: runs it at the candidate being tried, tells the trial its time.
+  void advance_in_trials(std::int64_t n, const std::vector<double>& K, std::int64_t kind,
+                         std::vector<double>* order);
   double max_node_order() const;
   /// Collective the first time (the network's content hash): called by every rank alike.
   std::string run_fingerprint() {
@@ -190,7 +200,11 @@ class Run {
   int m_k_start = 0;
   double m_seconds_before = 0.0;  // integration seconds of earlier sessions (resume)
   Clock::time_point m_loop_start{};
-  ThreadTrial m_trial;  ///< the first steps' thread counts (thread_trial.hpp), or none
+  StepTrial m_trial;  ///< the first steps' thread counts (step_trial.hpp), or none
+  /// After the thread count's: the force's column segments (segment_candidates), or none.
+  StepTrial m_segment_trial;
+  std::vector<int> m_segment_counts;  ///< this rank's segments of each candidate index
+  bool m_segments_considered = false;
 };
 
 std::vector<double> Run::order_parameter(std::vector<double> order_sums) const {
@@ -365,7 +379,11 @@ void Run::finish(bool interrupted) {
   m_result.force_name = m_force.name();
   m_result.device = m_stepper->device();
   m_result.thread_trial = m_trial.summary();
-  if (m_trial.active()) omp_set_num_threads(m_trial.chosen());  // the run ended during the trial
+  m_result.segment_trial = m_segment_trial.summary();
+  // The run ended during a trial: the rule's choice again for what the caller does next.
+  if (m_trial.active()) omp_set_num_threads(m_trial.chosen());
+  if (m_segment_trial.active())
+    m_force.use_segments(m_segment_counts[static_cast<std::size_t>(m_segment_trial.chosen())]);
 }
 
 void Run::restore(const Checkpoint& c) {
@@ -463,7 +481,7 @@ SimulationResult Run::execute() {
     restore(read_checkpoint(m_params.checkpoint_path));
     // Eligible by the whole run's steps (simulate), but only the rest of them run now.
     if (!trial_fits(m_trial, total_steps(m_params) - static_cast<double>(m_result.steps)))
-      m_trial = ThreadTrial();
+      m_trial = StepTrial();
   } else {
     start_segment(0);
   }
@@ -491,22 +509,14 @@ SimulationResult Run::execute() {
           return m_result;
         }
       }
-      const std::int64_t n =
-          std::min(chunk_end(left) - m_seg.step, m_trial.chunk_limit());  // no limit: no trial
+      // No limit where no trial is active.
+      const std::int64_t n = std::min(
+          {chunk_end(left) - m_seg.step, m_trial.chunk_limit(), m_segment_trial.chunk_limit()});
       const bool sampled = m_seg.step >= transient;  // every step of the chunk, or none
       order.clear();
-      if (m_trial.active()) omp_set_num_threads(m_trial.threads());
-      const Clock::time_point chunk_start = Clock::now();
-      m_stepper->advance(*m_integrator, m_h, K, n, sampled ? &order : nullptr);
-      if (m_trial.active()) {
-        // Steps of one kind cost the same: one segment's integrator and step, sampled or not.
-        // Over several ranks, the slowest rank's time (the others wait for it at every step's
-        // halo exchange): every rank's trial is told the same and takes the same decisions.
-        const double seconds =
-            ParallelSession::max(std::chrono::duration<double>(Clock::now() - chunk_start).count());
-        m_trial.add(n, seconds, 2 * static_cast<std::int64_t>(k) + (sampled ? 1 : 0));
-        if (!m_trial.active()) omp_set_num_threads(m_trial.chosen());
-      }
+      // Steps of one kind cost the same: one segment's integrator and step, sampled or not.
+      advance_in_trials(n, K, 2 * static_cast<std::int64_t>(k) + (sampled ? 1 : 0),
+                        sampled ? &order : nullptr);
       session_steps += n;
       m_result.steps += n;
       for (std::int64_t i = 0; i < n; ++i) {
@@ -527,6 +537,57 @@ SimulationResult Run::execute() {
   m_progress.finish();
   finish(false);
   return m_result;
+}
+
+void Run::advance_in_trials(std::int64_t n, const std::vector<double>& K, std::int64_t kind,
+                            std::vector<double>* order) {
+  // At most one trial at a time: the segments' starts once the thread count's has ended.
+  StepTrial* trial = m_trial.active()           ? &m_trial
+                     : m_segment_trial.active() ? &m_segment_trial
+                                                : nullptr;
+  const auto use = [&](int candidate) {
+    if (trial == &m_trial) {
+      omp_set_num_threads(candidate);
+    } else {
+      m_force.use_segments(m_segment_counts[static_cast<std::size_t>(candidate)]);
+    }
+  };
+  if (trial != nullptr) use(trial->candidate());
+  const Clock::time_point chunk_start = Clock::now();
+  m_stepper->advance(*m_integrator, m_h, K, n, order);
+  if (trial != nullptr) {
+    // Over several ranks, the slowest rank's time (the others wait for it at every step's halo
+    // exchange): every rank's trial is told the same and takes the same decisions.
+    const double seconds =
+        ParallelSession::max(std::chrono::duration<double>(Clock::now() - chunk_start).count());
+    trial->add(n, seconds, kind);
+    if (!trial->active()) use(trial->chosen());
+  }
+  // Not after the thread trial's last chunk: the force is prepared at the chosen count only by
+  // the next one.
+  if (trial != &m_trial) consider_segment_trial();
+}
+
+// Once, after the first chunk run outside the thread trial (the force has been prepared at the
+// team that goes on): a trial of the force's segment candidates where every rank's force has them
+// (agreed over ranks, so every rank takes the same chunks; each rank runs its own counts) and the
+// trial fits the steps left. Collective.
+void Run::consider_segment_trial() {
+  if (m_segments_considered) return;
+  m_segments_considered = true;
+  m_segment_counts =
+      m_stepper->device() == "cpu" ? m_force.segment_candidates() : std::vector<int>{};
+  if (ParallelSession::max(m_segment_counts.size() == 2 ? 0.0 : 1.0) > 0.0) return;
+  const double work = ParallelSession::max(static_cast<double>(m_force.work_per_evaluation()) *
+                                           static_cast<double>(m_width));
+  const auto sample_steps = static_cast<std::int64_t>(
+      std::max(1.0, std::ceil(static_cast<double>(k_trial_sample_work) / work)));
+  std::vector<std::string> labels;
+  for (const int count : m_segment_counts)
+    labels.push_back(count == 1 ? "unsegmented" : std::to_string(count) + " segments");
+  StepTrial trial({0, 1}, sample_steps, k_trial_samples, std::move(labels));
+  if (trial_fits(trial, total_steps(m_params) - static_cast<double>(m_result.steps)))
+    m_segment_trial = std::move(trial);
 }
 
 /// What every rank's trial is made from, the same on all of them: whether every rank leaves the
@@ -550,14 +611,14 @@ TrialInputs trial_inputs(bool asks, std::int64_t work, int available) {
   return {v[0] < 0.0, static_cast<std::int64_t>(v[1]), static_cast<int>(-v[2])};
 }
 
-/// The trial of the default thread count (thread_trial.hpp): the rule's count for the inputs, 1
+/// The trial of the default thread count (step_trial.hpp): the rule's count for the inputs, 1
 /// and all the threads offered (not the counts in between), each timed over samples of
 /// k_trial_sample_work units of the rule's work. Every rank makes the same trial from the same
 /// inputs and is told the same times (Run::execute), so the ranks switch counts at the same steps.
 /// None where a rank was given a count or runs on a GPU, where one thread is offered, where a step
 /// is more than a sample's work, or where the trial's steps would exceed 1 / k_trial_share of the
 /// run's (docs/performance.md "The thread rule measured at run time").
-ThreadTrial thread_trial(const SimulationParameters& params, TrialInputs in) {
+StepTrial thread_trial(const SimulationParameters& params, TrialInputs in) {
   const std::int64_t work = in.work;
   const int available = in.available;
   if (!in.every_rank_asks || available < 2) return {};
@@ -569,7 +630,7 @@ ThreadTrial thread_trial(const SimulationParameters& params, TrialInputs in) {
   }
   const std::int64_t sample_steps =
       std::max<std::int64_t>(1, (k_trial_sample_work + work - 1) / std::max<std::int64_t>(work, 1));
-  ThreadTrial trial(std::move(candidates), sample_steps, k_trial_samples);
+  StepTrial trial(std::move(candidates), sample_steps, k_trial_samples);
   if (!trial_fits(trial, total_steps(params))) return {};
   return trial;
 }

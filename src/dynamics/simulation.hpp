@@ -35,8 +35,11 @@ struct SimulationResult {
   EdgeOffset nnz_per_evaluation = 0;  ///< summed over ranks
   int threads = 1;                    ///< OpenMP threads per rank the stepping used
   std::int64_t thread_rule_work = 0;  ///< this rank's work per step for the thread rule
-  /// The timed first steps that chose the default count (ThreadTrial::summary), or empty.
+  /// The timed first steps that chose the default count (StepTrial::summary), or empty.
   std::string thread_trial;
+  /// The timed first steps that chose the sparse force's column segments (StepTrial::summary;
+  /// NetworkForce::segment_candidates), or empty.
+  std::string segment_trial;
   int lanes = 1;  ///< replicas integrated side by side per step (lanes(params))
   std::string force_name;
   std::string device = "cpu";  ///< where the steps ran (EnsembleStepper::device)

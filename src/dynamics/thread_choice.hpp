@@ -6,7 +6,7 @@
 // work_per_thread(policy) of a step's work: gathers plus each row's own work, times the replicas
 // (step_work; measured: bench/thread_rule.sh, docs/performance.md "Threads"). A run long enough
 // then times its first steps at this count, at 1 and at all the threads offered, and goes on at
-// the fastest, every rank alike (thread_trial.hpp; simulation.cpp: trial_inputs): this rule is its
+// the fastest, every rank alike (step_trial.hpp; simulation.cpp: trial_inputs): this rule is its
 // first candidate and the whole choice of short runs.
 #include <cstdint>
 

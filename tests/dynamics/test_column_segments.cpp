@@ -458,6 +458,43 @@ TEST_CASE(
   CHECK(automatic_segment_width(1'000'000, 100'000'000, 1'000'000, 16, within, plenty) == 250'000);
 }
 
+TEST_CASE("the trial's slices: only where the rule left the rows unblocked for the carry alone",
+          "[column_segments]") {
+  // The caches both AMD EPYC guests report (512 KiB or 1 MiB L2, a 32 MiB L3 of a core complex).
+  const CacheSizes guest{std::size_t{512} << 10, std::size_t{32} << 20, 1, true};
+  const std::size_t plenty = std::size_t{64} << 30;
+  // ER N = 10^6, degree 100: 64- and 128-byte records, which the rule leaves unblocked, are tried
+  // in its 16 slices (64 MB in 4 MiB slices; 128 MB capped at d / 6) of 62,500 columns.
+  CHECK(trial_segment_width(1'000'000, 100'000'000, 1'000'000, 64, guest, plenty) == 62'500);
+  CHECK(trial_segment_width(1'000'000, 100'000'000, 1'000'000, 128, guest, plenty) == 62'500);
+  // Two threads: 4 MiB slices a thread again (16 MiB of the 32 for the team).
+  CHECK(trial_segment_width(1'000'000, 100'000'000, 1'000'000, 64,
+                            CacheSizes{guest.l2, guest.l3, 2, true}, plenty) == 62'500);
+  // Where the rule segments (16- and 32-byte records) or the table fits in L2, nothing to try.
+  CHECK(trial_segment_width(1'000'000, 100'000'000, 1'000'000, 16, guest, plenty) == k_unsegmented);
+  CHECK(trial_segment_width(1'000'000, 100'000'000, 1'000'000, 32, guest, plenty) == k_unsegmented);
+  CHECK(trial_segment_width(4'000, 400'000, 4'000, 64, guest, plenty) == k_unsegmented);
+  // Records beyond k_max_segmented_record_bytes run in registers unblocked, slices in L2 never
+  // weigh the carry, and memory that would not hold the segments refuses them.
+  CHECK(trial_segment_width(1'000'000, 100'000'000, 1'000'000, 256, guest, plenty) ==
+        k_unsegmented);
+  const CacheSizes socket{std::size_t{1280} << 10, std::size_t{48} << 20, 1, false};
+  CHECK(trial_segment_width(1'000'000, 100'000'000, 1'000'000, 64, socket, plenty) ==
+        k_unsegmented);
+  const std::size_t needed = segmented_bytes(100'000'000, 1'000'000, 16, 62'500, 64);
+  CHECK(trial_segment_width(1'000'000, 100'000'000, 1'000'000, 64, guest, 2 * needed) == 62'500);
+  CHECK(trial_segment_width(1'000'000, 100'000'000, 1'000'000, 64, guest, 2 * needed - 1) ==
+        k_unsegmented);
+  // The rule and the trial never both cut: one of them is unblocked for every record.
+  for (const std::size_t record :
+       std::initializer_list<std::size_t>{8U, 16U, 32U, 64U, 128U, 256U}) {
+    CHECK((automatic_segment_width(1'000'000, 100'000'000, 1'000'000, record, guest, plenty) ==
+               k_unsegmented ||
+           trial_segment_width(1'000'000, 100'000'000, 1'000'000, record, guest, plenty) ==
+               k_unsegmented));
+  }
+}
+
 TEST_CASE(
     "automatic segment width: an L3 that is no core complex's holds no slice, whatever its "
     "size",

@@ -1,29 +1,35 @@
 #pragma once
-// The default thread count chosen by timing the run's own first steps at each candidate count.
-// The rule in work units (thread_choice.hpp) stands for two costs of the machine: what a second
-// thread adds to a step (its barriers and wake-ups) and the time a unit of work takes. Measured
-// on two machines they differ by ~8x and ~3x (docs/performance.md, "The thread rule on the AMD
-// EPYC"), so no constant serves both. Results are bit-identical for any thread count, so a run can
-// take its first steps at each count, time them, and go on at the fastest: the steps are the
-// run's own, none is repeated and no result changes.
+// A choice among settings that give the same bits, made by timing the run's own first steps at
+// each: the default thread count, and the column segments of the sparse force where its rule
+// cannot tell from what the machine reports which runs faster (NetworkForce::
+// segment_candidates). Results are bit-identical for any thread count and any segment width, so
+// a run can take its first steps at each candidate, time them, and go on at the fastest: the
+// steps are the run's own, none is repeated and no result changes.
+// Why threads: the rule in work units (thread_choice.hpp) stands for two costs of the machine,
+// what a second thread adds to a step (its barriers and wake-ups) and the time a unit of work
+// takes. Measured on two machines they differ by ~8x and ~3x (docs/performance.md, "The thread
+// rule on the AMD EPYC"), so no constant serves both. Why segments: 64-byte records at N = 10^6
+// ran 1.5-2.3x faster in L3 slices than unblocked on one AMD EPYC guest and 1.2-2.2x slower on
+// another that reports the same caches (docs/performance.md, "64-byte records on the AMD EPYC
+// family 25 model 17").
 //
 // The protocol (a pure function of the steps it is told of, so it is tested with given times): in
-// `samples` rounds, each candidate in order takes one step untimed where the count changes (the
-// team starts or wakes, a force decides its blocking again: NetworkForce::prepare_segments), then
+// `samples` rounds, each candidate in order takes one step untimed where the candidate changes (a
+// team starts or wakes, a force cuts its segments again: NetworkForce::prepare_segments), then
 // a timed sample of `sample_steps`; once every other candidate is dropped, the first one's samples
-// run back to back. The rounds interleave the counts, so a slow spell of the machine (a
-// VM's neighbour, a clock change) that lasts a few samples slows samples of every count, not all
-// of one (on the AMD EPYC, one trial's three consecutive samples of 2 threads all ran ~40% slower
-// than their usual, and a benchmark row kept 1 thread where 2 ran 1.40x faster:
-// docs/performance.md, "The thread trial in rounds"). The count whose fastest sample (per step) is
-// fastest is kept, the first candidate (the rule's) unless another is faster by more than
+// run back to back. The rounds interleave the candidates, so a slow spell of the machine (a
+// VM's neighbour, a clock change) that lasts a few samples slows samples of every candidate, not
+// all of one (on the AMD EPYC, one trial's three consecutive samples of 2 threads all ran ~40%
+// slower than their usual, and a benchmark row kept 1 thread where 2 ran 1.40x faster:
+// docs/performance.md, "The thread trial in rounds"). The candidate whose fastest sample (per step)
+// is fastest is kept, the first candidate (the rule's) unless another is faster by more than
 // k_trial_margin. A candidate whose sample in the first round is slower than k_trial_abandon times
 // the fastest before it takes no more samples. A sample is made of whole chunks (the caller limits
 // each chunk to chunk_limit()) of one kind, a number the caller gives to steps of one cost (a
 // segment's integrator and step; sampled steps form the order sums, transient ones do not): a chunk
-// of another kind starts the trial again, itself uncounted (it ran at whatever count was being
-// tried), at most k_trial_restarts times; after that, or if the run ends first, the first candidate
-// stays.
+// of another kind starts the trial again, itself uncounted (it ran at whatever candidate was
+// being tried), at most k_trial_restarts times; after that, or if the run ends first, the first
+// candidate stays.
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -32,11 +38,11 @@
 namespace hmfnet {
 
 /// A candidate must beat the first candidate's fastest sample by this fraction to be chosen: a
-/// VM's run-to-run spread of a few per cent must not move a run off the rule's count for nothing.
+/// VM's run-to-run spread of a few per cent must not move a run off the rule's choice for nothing.
 inline constexpr double k_trial_margin = 0.03;
 /// How often a change of the chunks' kind may start the trial again before it gives up.
 inline constexpr int k_trial_restarts = 2;
-/// Untimed steps before each timed sample at a count other than the last chunk's.
+/// Untimed steps before each timed sample at a candidate other than the last chunk's.
 inline constexpr std::int64_t k_trial_warm_steps = 1;
 /// A candidate this much slower than the fastest before it, in the first round, is dropped:
 /// an all-cores team that sleeps at every barrier may run many times slower than one thread.
@@ -57,30 +63,34 @@ inline constexpr double k_trial_abandon = 2.0;
 /// ~270,000 units) stay whole: a second thread's cost is then a fraction of a step.
 inline constexpr std::int64_t k_trial_split_steps = 16;
 
-class ThreadTrial {
+class StepTrial {
  public:
-  /// No trial: active() is false and the count stays what the caller set.
-  ThreadTrial() = default;
-  /// `candidates`: distinct counts >= 1, the rule's first; `sample_steps` >= 1; `samples` >= 1.
-  ThreadTrial(std::vector<int> candidates, std::int64_t sample_steps, int samples);
+  /// No trial: active() is false and the setting stays what the caller set.
+  StepTrial() = default;
+  /// `candidates`: distinct settings (thread counts, or the caller's numbers for its choices),
+  /// the rule's first; `sample_steps` >= 1; `samples` >= 1; `labels`: what summary() calls each
+  /// candidate (empty: its number).
+  StepTrial(std::vector<int> candidates, std::int64_t sample_steps, int samples,
+            std::vector<std::string> labels = {});
 
   bool active() const { return m_active; }
-  /// The count the next chunk runs at (while active).
-  int threads() const;
+  /// The candidate the next chunk runs at (while active).
+  int candidate() const;
   /// Steps the next chunk may take: k_trial_warm_steps for the untimed step before a sample, else
   /// what is left of the current sample, or less where a first-round sample is split
   /// (k_trial_split_steps); no limit when inactive.
   std::int64_t chunk_limit() const;
-  /// A chunk of `steps` (<= chunk_limit()) that took `seconds` at threads(); `kind`: its cost
-  /// class (steps of one kind cost the same at a given count).
+  /// A chunk of `steps` (<= chunk_limit()) that took `seconds` at candidate(); `kind`: its cost
+  /// class (steps of one kind cost the same at a given candidate).
   void add(std::int64_t steps, double seconds, std::int64_t kind);
   /// Steps of one whole trial with every sample taken: candidates x samples x (sample steps +
   /// k_trial_warm_steps).
   std::int64_t steps() const;
-  /// The count chosen once the trial ended; the first candidate before that or if it gave up.
+  /// The candidate chosen once the trial ended; the first candidate before that or if it gave up.
   int chosen() const { return m_chosen; }
   /// Each candidate's fastest sample in microseconds a step (of a candidate dropped before its
-  /// first sample ended, the steps it took), and the choice: "1: 81.2 us, 2: 47.9 us -> 2", or why
+  /// first sample ended, the steps it took), and the choice: "1: 81.2 us, 2: 47.9 us -> 2" (with
+  /// labels: "unsegmented: 81.2 us, 16 segments: 47.9 us -> 16 segments"), or why
   /// there was no choice; empty where no trial was made.
   std::string summary() const;
 
@@ -94,6 +104,7 @@ class ThreadTrial {
   double fastest_before() const;
 
   std::vector<int> m_candidates;
+  std::vector<std::string> m_labels;  ///< one a candidate
   std::int64_t m_sample_steps = 0;
   int m_samples = 0;
   bool m_active = false;
@@ -101,7 +112,7 @@ class ThreadTrial {
   int m_restarts = 0;
   std::int64_t m_kind = 0;  ///< the kind of the trial's chunks, fixed by its first chunk
   bool m_kind_known = false;
-  std::size_t m_candidate = 0;  ///< index of the count being timed
+  std::size_t m_candidate = 0;  ///< index of the candidate being timed
   int m_round = 0;              ///< 0..samples - 1
   bool m_warm = false;          ///< the next chunk is the untimed step before a sample
   std::vector<bool> m_dropped;  ///< candidates that take no more samples

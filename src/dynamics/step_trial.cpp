@@ -1,4 +1,4 @@
-#include "dynamics/thread_trial.hpp"
+#include "dynamics/step_trial.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -6,26 +6,35 @@
 
 namespace hmfnet {
 
-ThreadTrial::ThreadTrial(std::vector<int> candidates, std::int64_t sample_steps, int samples)
-    : m_candidates(std::move(candidates)), m_sample_steps(sample_steps), m_samples(samples) {
+StepTrial::StepTrial(std::vector<int> candidates, std::int64_t sample_steps, int samples,
+                     std::vector<std::string> labels)
+    : m_candidates(std::move(candidates)),
+      m_labels(std::move(labels)),
+      m_sample_steps(sample_steps),
+      m_samples(samples) {
   if (m_candidates.empty() || sample_steps < 1 || samples < 1) {
-    throw std::invalid_argument("ThreadTrial: candidates, sample steps and samples must be given");
+    throw std::invalid_argument("StepTrial: candidates, sample steps and samples must be given");
   }
   for (std::size_t i = 0; i < m_candidates.size(); ++i) {
-    if (m_candidates[i] < 1 ||
-        std::find(m_candidates.begin(), m_candidates.begin() + static_cast<std::ptrdiff_t>(i),
+    if (std::find(m_candidates.begin(), m_candidates.begin() + static_cast<std::ptrdiff_t>(i),
                   m_candidates[i]) != m_candidates.begin() + static_cast<std::ptrdiff_t>(i)) {
-      throw std::invalid_argument("ThreadTrial: candidates must be distinct counts >= 1");
+      throw std::invalid_argument("StepTrial: candidates must be distinct");
     }
+  }
+  if (m_labels.empty()) {
+    for (const int c : m_candidates) m_labels.push_back(std::to_string(c));
+  }
+  if (m_labels.size() != m_candidates.size()) {
+    throw std::invalid_argument("StepTrial: one label a candidate, or none");
   }
   m_chosen = m_candidates.front();
   m_active = m_candidates.size() > 1;
   restart();
 }
 
-int ThreadTrial::threads() const { return m_active ? m_candidates[m_candidate] : m_chosen; }
+int StepTrial::candidate() const { return m_active ? m_candidates[m_candidate] : m_chosen; }
 
-std::int64_t ThreadTrial::chunk_limit() const {
+std::int64_t StepTrial::chunk_limit() const {
   if (!m_active) return std::numeric_limits<std::int64_t>::max();
   if (m_warm) return k_trial_warm_steps;
   const std::int64_t left = m_sample_steps - m_steps_in_sample;
@@ -39,12 +48,12 @@ std::int64_t ThreadTrial::chunk_limit() const {
   return std::min(left, m_steps_in_sample);
 }
 
-double ThreadTrial::fastest_before() const {
+double StepTrial::fastest_before() const {
   return *std::min_element(m_best.begin(),
                            m_best.begin() + static_cast<std::ptrdiff_t>(m_candidate));
 }
 
-void ThreadTrial::restart() {
+void StepTrial::restart() {
   m_candidate = 0;
   m_round = 0;
   m_warm = true;
@@ -55,15 +64,15 @@ void ThreadTrial::restart() {
   m_dropped.assign(m_candidates.size(), false);
 }
 
-std::int64_t ThreadTrial::steps() const {
+std::int64_t StepTrial::steps() const {
   return static_cast<std::int64_t>(m_candidates.size()) * m_samples *
          (m_sample_steps + k_trial_warm_steps);
 }
 
-void ThreadTrial::add(std::int64_t steps, double seconds, std::int64_t kind) {
+void StepTrial::add(std::int64_t steps, double seconds, std::int64_t kind) {
   if (!m_active) return;
   if (steps < 1 || steps > chunk_limit()) {
-    throw std::invalid_argument("ThreadTrial: a chunk must take 1 to chunk_limit() steps");
+    throw std::invalid_argument("StepTrial: a chunk must take 1 to chunk_limit() steps");
   }
   if (m_kind_known && kind != m_kind) {
     // The samples so far timed another kind of step: start again on this kind, from the next
@@ -103,7 +112,7 @@ void ThreadTrial::add(std::int64_t steps, double seconds, std::int64_t kind) {
 }
 
 /// The next candidate not dropped, in this round or the next; the first is never dropped.
-void ThreadTrial::advance() {
+void StepTrial::advance() {
   const int last = m_candidates[m_candidate];
   do {
     if (++m_candidate == m_candidates.size()) {
@@ -117,7 +126,7 @@ void ThreadTrial::advance() {
   m_warm = m_candidates[m_candidate] != last;
 }
 
-void ThreadTrial::finish() {
+void StepTrial::finish() {
   m_active = false;
   std::size_t best = 0;
   for (std::size_t i = 1; i < m_candidates.size(); ++i) {
@@ -127,7 +136,7 @@ void ThreadTrial::finish() {
   if (best != 0 && m_best[best] < (1.0 - k_trial_margin) * m_best[0]) m_chosen = m_candidates[best];
 }
 
-std::string ThreadTrial::summary() const {
+std::string StepTrial::summary() const {
   if (m_candidates.size() < 2) return "";
   if (!m_gave_up.empty()) return "no choice: " + m_gave_up;
   if (m_active || m_best.back() == std::numeric_limits<double>::infinity()) {
@@ -136,11 +145,11 @@ std::string ThreadTrial::summary() const {
   std::string s;
   char buffer[64];
   for (std::size_t i = 0; i < m_candidates.size(); ++i) {
-    std::snprintf(buffer, sizeof buffer, "%s%d: %.4g us", i > 0 ? ", " : "", m_candidates[i],
-                  m_best[i] * 1e6);
-    s += buffer;
+    std::snprintf(buffer, sizeof buffer, ": %.4g us", m_best[i] * 1e6);
+    s += (i > 0 ? ", " : "") + m_labels[i] + buffer;
   }
-  return s + " -> " + std::to_string(m_chosen);
+  const auto chosen = std::find(m_candidates.begin(), m_candidates.end(), m_chosen);
+  return s + " -> " + m_labels[static_cast<std::size_t>(chosen - m_candidates.begin())];
 }
 
 }  // namespace hmfnet

@@ -1,5 +1,6 @@
-// The trial of the default thread count (thread_trial.hpp): its protocol with given times, never
-// with measured ones, and a run that switches counts during it giving the bits of one thread.
+// The trial of the run's first steps (step_trial.hpp): its protocol with given times, never with
+// measured ones, and runs that switch thread counts or column segments during it giving the bits
+// of one thread and of the unblocked rows.
 #include <omp.h>
 
 #include <catch2/catch.hpp>
@@ -12,8 +13,8 @@
 #include "dynamics/network_force.hpp"
 #include "dynamics/rank_one_force.hpp"
 #include "dynamics/simulation.hpp"
+#include "dynamics/step_trial.hpp"
 #include "dynamics/thread_choice.hpp"
-#include "dynamics/thread_trial.hpp"
 #include "network/complete_graph.hpp"
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
@@ -26,11 +27,11 @@ namespace {
 
 /// Runs the trial to its end with whole samples, `seconds_a_step[i]` for candidate i's steps;
 /// returns the counts it asked for, one per sample.
-std::vector<int> run_trial(ThreadTrial& trial, const std::vector<double>& seconds_a_step,
+std::vector<int> run_trial(StepTrial& trial, const std::vector<double>& seconds_a_step,
                            const std::vector<int>& candidates) {
   std::vector<int> asked;
   while (trial.active()) {
-    const int threads = trial.threads();
+    const int threads = trial.candidate();
     asked.push_back(threads);
     const std::int64_t steps = trial.chunk_limit();
     std::size_t i = 0;
@@ -44,7 +45,7 @@ std::vector<int> run_trial(ThreadTrial& trial, const std::vector<double>& second
 
 TEST_CASE("The trial times the counts in turn, each after one untimed step, and keeps the fastest",
           "[threads][thread_trial]") {
-  ThreadTrial trial({2, 1}, 5, 3);
+  StepTrial trial({2, 1}, 5, 3);
   REQUIRE(trial.active());
   CHECK(trial.chunk_limit() == k_trial_warm_steps);
   CHECK(trial.steps() == 2 * 3 * (5 + k_trial_warm_steps));
@@ -55,19 +56,19 @@ TEST_CASE("The trial times the counts in turn, each after one untimed step, and 
   CHECK(trial.chosen() == 1);
   CHECK(trial.summary() == "2: 2 us, 1: 1 us -> 1");
   CHECK(trial.chunk_limit() == std::numeric_limits<std::int64_t>::max());
-  CHECK(trial.threads() == 1);
+  CHECK(trial.candidate() == 1);
 }
 
 TEST_CASE("The rule's count stays unless another beats it by the margin",
           "[threads][thread_trial]") {
   const double rule = 1e-5;
-  ThreadTrial within({2, 1}, 3, 2);
+  StepTrial within({2, 1}, 3, 2);
   run_trial(within, {rule, (1.0 - 0.5 * k_trial_margin) * rule}, {2, 1});
   CHECK(within.chosen() == 2);
-  ThreadTrial beyond({2, 1}, 3, 2);
+  StepTrial beyond({2, 1}, 3, 2);
   run_trial(beyond, {rule, (1.0 - 2.0 * k_trial_margin) * rule}, {2, 1});
   CHECK(beyond.chosen() == 1);
-  ThreadTrial three({1, 2, 4}, 1, 1);
+  StepTrial three({1, 2, 4}, 1, 1);
   CHECK(run_trial(three, {3e-6, 2e-6, 2.5e-6}, {1, 2, 4}) == std::vector<int>{1, 1, 2, 2, 4, 4});
   CHECK(three.chosen() == 2);
 }
@@ -80,11 +81,11 @@ TEST_CASE("A slow spell of the machine as long as a count's samples cannot decid
   const int samples = 3;
   for (int spell = 0; spell + samples <= 2 * samples; ++spell) {
     INFO("the spell starts at timed sample " << spell);
-    ThreadTrial trial({1, 2}, 4, samples);
+    StepTrial trial({1, 2}, 4, samples);
     int timed = 0;
     while (trial.active()) {
       const std::int64_t steps = trial.chunk_limit();
-      double seconds = (trial.threads() == 1 ? 1.4e-6 : 1e-6) * static_cast<double>(steps);
+      double seconds = (trial.candidate() == 1 ? 1.4e-6 : 1e-6) * static_cast<double>(steps);
       if (steps == k_trial_warm_steps) {
         trial.add(steps, seconds, 0);
         continue;
@@ -100,7 +101,7 @@ TEST_CASE("A slow spell of the machine as long as a count's samples cannot decid
 
 TEST_CASE("A sample is the fastest of its chunks' sums, the untimed steps never count",
           "[threads][thread_trial]") {
-  ThreadTrial trial({1, 2}, 4, 2);
+  StepTrial trial({1, 2}, 4, 2);
   // Round 1, count 1: an untimed step that is very fast, then a sample of 4 steps in chunks of
   // 3 + 1.
   CHECK_THROWS_AS(trial.add(2, 1e-9, 0), std::invalid_argument);  // the untimed step is one
@@ -110,11 +111,11 @@ TEST_CASE("A sample is the fastest of its chunks' sums, the untimed steps never 
   CHECK(trial.chunk_limit() == 1);
   CHECK_THROWS_AS(trial.add(2, 1e-6, 0), std::invalid_argument);
   trial.add(1, 5e-6, 0);  // 8 us over 4 steps: 2 us a step
-  CHECK(trial.threads() == 2);
+  CHECK(trial.candidate() == 2);
   trial.add(1, 1e-9, 0);
   trial.add(4, 7.84e-6, 0);  // 1.96 us a step: within the margin of 2
   // Round 2.
-  CHECK(trial.threads() == 1);
+  CHECK(trial.candidate() == 1);
   trial.add(1, 1e-9, 0);
   trial.add(4, 12e-6, 0);  // 3 us a step: the slower sample is not kept
   trial.add(1, 1e-9, 0);
@@ -126,12 +127,12 @@ TEST_CASE("A sample is the fastest of its chunks' sums, the untimed steps never 
 
 TEST_CASE("A change of the steps' kind starts the trial again, a few times at most",
           "[threads][thread_trial]") {
-  ThreadTrial trial({2, 1}, 2, 1);
+  StepTrial trial({2, 1}, 2, 1);
   trial.add(1, 1e-6, 0);
   trial.add(2, 1e-6, 0);
-  CHECK(trial.threads() == 1);  // candidate 1 now
-  trial.add(1, 1e-6, 1);        // another kind: the trial starts again, this chunk uncounted
-  CHECK(trial.threads() == 2);
+  CHECK(trial.candidate() == 1);  // candidate 1 now
+  trial.add(1, 1e-6, 1);          // another kind: the trial starts again, this chunk uncounted
+  CHECK(trial.candidate() == 2);
   CHECK(trial.chunk_limit() == k_trial_warm_steps);
   trial.add(1, 1e-6, 1);  // the same kind: the untimed step
   CHECK(trial.chunk_limit() == 2);
@@ -145,17 +146,17 @@ TEST_CASE("A change of the steps' kind starts the trial again, a few times at mo
 
 TEST_CASE("A count far slower than the fastest so far takes no more samples",
           "[threads][thread_trial]") {
-  ThreadTrial trial({1, 4, 2}, 1, 3);
+  StepTrial trial({1, 4, 2}, 1, 3);
   const std::vector<int> asked =
       run_trial(trial, {1e-6, (k_trial_abandon + 0.5) * 1e-6, 0.5e-6}, {1, 4, 2});
   CHECK(asked == std::vector<int>{1, 1, 4, 4, 2, 2, 1, 1, 2, 2, 1, 1, 2, 2});
   CHECK(trial.chosen() == 2);
   CHECK(trial.summary() == "1: 1 us, 4: 2.5 us, 2: 0.5 us -> 2");
-  ThreadTrial kept({1, 2}, 1, 3);  // within the factor: every sample taken
+  StepTrial kept({1, 2}, 1, 3);  // within the factor: every sample taken
   CHECK(run_trial(kept, {1e-6, 0.9 * k_trial_abandon * 1e-6}, {1, 2}).size() == 12);
   // Once the others are dropped, the first count's samples follow each other with no untimed
   // step between them: its team is already running.
-  ThreadTrial alone({1, 2}, 1, 3);
+  StepTrial alone({1, 2}, 1, 3);
   const std::vector<int> alone_asked =
       run_trial(alone, {1e-6, (k_trial_abandon + 1.0) * 1e-6}, {1, 2});
   CHECK(alone_asked == std::vector<int>{1, 1, 2, 2, 1, 1, 1});
@@ -166,10 +167,10 @@ TEST_CASE("A count far slower is dropped as soon as its time passes what its who
           "[threads][thread_trial]") {
   // Steps the trial runs at each count, 1 us a step at 1 thread and `slow` us at 2, in the chunks
   // it asks for.
-  const auto steps_at = [](double slow, ThreadTrial& trial) {
+  const auto steps_at = [](double slow, StepTrial& trial) {
     std::vector<std::int64_t> steps(3, 0);
     while (trial.active()) {
-      const int threads = trial.threads();
+      const int threads = trial.candidate();
       const std::int64_t n = trial.chunk_limit();
       steps[static_cast<std::size_t>(threads)] += n;
       trial.add(n, (threads == 1 ? 1e-6 : slow * 1e-6) * static_cast<double>(n), 0);
@@ -178,7 +179,7 @@ TEST_CASE("A count far slower is dropped as soon as its time passes what its who
   };
   // 160x slower (K_N N = 100 under PASSIVE): dropped after the untimed step and chunks of 1, 1,
   // 2, 4, 8 steps, whose 16 x 160 us pass the 2 x 1000 x 1 us a whole sample may take.
-  ThreadTrial far({1, 2}, 1000, 3);
+  StepTrial far({1, 2}, 1000, 3);
   const std::vector<std::int64_t> far_steps = steps_at(160.0, far);
   CHECK(far_steps[2] == k_trial_warm_steps + 16);
   // Count 1: its samples, the untimed step before the first and the one back from 2 threads.
@@ -188,15 +189,15 @@ TEST_CASE("A count far slower is dropped as soon as its time passes what its who
   // The decision is the whole sample's: 1.9x slower takes every sample (its first step within the
   // limit, the rest in one chunk), 2.1x is dropped only once its sample is whole (the sum passes
   // 2000 us at its 953rd step, in the chunk that ends it).
-  ThreadTrial near({1, 2}, 1000, 3);
+  StepTrial near({1, 2}, 1000, 3);
   CHECK(steps_at(1.9, near)[2] == 3 * (1000 + k_trial_warm_steps));
   CHECK(near.chosen() == 1);
-  ThreadTrial past({1, 2}, 1000, 3);
+  StepTrial past({1, 2}, 1000, 3);
   CHECK(steps_at(2.1, past)[2] == 1000 + k_trial_warm_steps);
   CHECK(past.chosen() == 1);
   // A count whose first step is slow (a sleeping team's wake) and the rest fast takes its whole
   // sample, in doubling chunks, and is chosen.
-  ThreadTrial woken({1, 2}, 1000, 1);
+  StepTrial woken({1, 2}, 1000, 1);
   woken.add(1, 1e-9, 0);
   woken.add(1000, 1e-3, 0);  // count 1: 1 us a step
   woken.add(1, 1e-9, 0);     // count 2's untimed step
@@ -215,32 +216,45 @@ TEST_CASE("A count far slower is dropped as soon as its time passes what its who
   // The first chunk of a sample of k_trial_split_steps steps is one step; a sample shorter than
   // that runs whole (its steps are large), at the first count as at the others.
   for (const std::int64_t sample : {k_trial_split_steps, k_trial_split_steps - 1}) {
-    ThreadTrial trial({1, 2}, sample, 1);
+    StepTrial trial({1, 2}, sample, 1);
     trial.add(1, 1e-9, 0);
     CHECK(trial.chunk_limit() == sample);
     trial.add(sample, 1e-6, 0);
     trial.add(1, 1e-9, 0);
-    CHECK(trial.threads() == 2);
+    CHECK(trial.candidate() == 2);
     CHECK(trial.chunk_limit() == (sample == k_trial_split_steps ? 1 : sample));
   }
 }
 
-TEST_CASE("A trial of one count makes no choice, and bad candidates are refused",
+TEST_CASE("A trial of one candidate makes no choice, and bad candidates are refused",
           "[threads][thread_trial]") {
-  const ThreadTrial none;
+  const StepTrial none;
   CHECK_FALSE(none.active());
   CHECK(none.summary().empty());
-  const ThreadTrial one({3}, 4, 2);
+  const StepTrial one({3}, 4, 2);
   CHECK_FALSE(one.active());
-  CHECK(one.threads() == 3);
+  CHECK(one.candidate() == 3);
   CHECK(one.summary().empty());
-  ThreadTrial unfinished({1, 2}, 4, 2);
+  StepTrial unfinished({1, 2}, 4, 2);
   unfinished.add(1, 1e-6, 0);
   CHECK(unfinished.summary() == "no choice: the run ended during the trial");
-  CHECK_THROWS_AS(ThreadTrial({}, 4, 2), std::invalid_argument);
-  CHECK_THROWS_AS(ThreadTrial({1, 1}, 4, 2), std::invalid_argument);
-  CHECK_THROWS_AS(ThreadTrial({0, 1}, 4, 2), std::invalid_argument);
-  CHECK_THROWS_AS(ThreadTrial({1, 2}, 0, 2), std::invalid_argument);
+  CHECK_THROWS_AS(StepTrial({}, 4, 2), std::invalid_argument);
+  CHECK_THROWS_AS(StepTrial({1, 1}, 4, 2), std::invalid_argument);
+  CHECK_THROWS_AS(StepTrial({1, 2}, 0, 2), std::invalid_argument);
+  CHECK_THROWS_AS(StepTrial({1, 2}, 4, 2, {"unsegmented"}), std::invalid_argument);
+}
+
+TEST_CASE("A trial's summary names its candidates by their labels", "[thread_trial]") {
+  StepTrial trial({0, 1}, 1, 1, {"unsegmented", "16 segments"});
+  CHECK(trial.candidate() == 0);
+  trial.add(1, 9.0, 0);  // untimed
+  trial.add(1, 2e-6, 0);
+  CHECK(trial.candidate() == 1);
+  trial.add(1, 9.0, 0);  // untimed: the candidate changed
+  trial.add(1, 1e-6, 0);
+  CHECK_FALSE(trial.active());
+  CHECK(trial.chosen() == 1);
+  CHECK(trial.summary() == "unsegmented: 2 us, 16 segments: 1 us -> 16 segments");
 }
 
 namespace {
@@ -384,4 +398,104 @@ TEST_CASE("A resumed run tries the default count only where its trial fits the s
     if (!tried) CHECK(resumed.thread_trial.empty());
   }
   test::remove_on_root(p.checkpoint_path);
+}
+
+namespace {
+
+/// ER N = 2000, mean degree 27, seed 5, float64 with 4 replicas (64-byte records, a table of
+/// 128 KB), its force reading caches of 8 KiB L2 and a 32 KiB core complex's L3: slices of 16
+/// KiB a thread would be 8, capped at floor(27 / 6) = 4 segments (on either rank of 2 too), whose
+/// carried sums (4 x 8 x 64 = 2048 B a row) exceed the lines they save (27 x 64 = 1728 B), so
+/// the rule leaves the rows unblocked and the trial tries 4 segments of 500 columns
+/// (column_segments.hpp: trial_segment_width).
+struct SegmentTrialCase {
+  Network net = erdos_renyi({2000, 27.0 / 2000.0, 5});
+  DistributedNetwork d{net};
+  static CacheSizes caches() { return {std::size_t{8} << 10, std::size_t{32} << 10, 1, true}; }
+};
+
+/// Two K of 5000 steps with 4 replicas: a step is ~2.2 10^5 stored entries x lanes (on 2 ranks
+/// the heavier rank's ~1.1 10^5), so samples of 19 steps (38 on 2 ranks) and 2 x 3 x 20 = 120
+/// trial steps (234), under 1/40 of the 10,000 (simulation.cpp: consider_segment_trial).
+SimulationParameters segment_trial_run() {
+  SimulationParameters p = test::short_run();
+  p.h = 0.04;
+  p.duration = 200.0;
+  p.transient = 2.0;
+  p.K = {20.0, 60.0};
+  p.record_stride = 100;
+  p.replicas = {{6.0, 1.0, 11}, {6.0, 1.0, 12}, {6.0, 1.0, 13}, {6.0, 1.0, 14}};
+  p.threads = 1;
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("A sparse force offers the segments its rule left for the carry alone, and runs them",
+          "[column_segments][thread_trial]") {
+  const ThreadCountScope one(1);
+  SegmentTrialCase c;
+  NetworkForce force(c.d);
+  force.read_caches_as(SegmentTrialCase::caches());
+  RotorState state = initial_state(c.d.first_row(), c.d.local_size(), segment_trial_run().replicas);
+  std::vector<double> g, g_cut;
+  ForceSums sums, sums_cut;
+  force.evaluate(state, g, sums);
+  CHECK(force.segments() == 1);
+  const std::vector<int> candidates = force.segment_candidates();
+  REQUIRE(candidates.size() == 2);
+  CHECK(candidates[0] == 1);
+  CHECK(candidates[1] == 4);
+  force.use_segments(4);
+  force.evaluate(state, g_cut, sums_cut);
+  CHECK(force.segments() == 4);
+  CHECK(g_cut == g);  // the same additions in the same order
+  CHECK(sums_cut.order == sums.order);
+  CHECK(sums_cut.coupling == sums.coupling);
+  force.use_segments(1);
+  force.evaluate(state, g_cut, sums_cut);
+  CHECK(force.segments() == 1);
+  CHECK(g_cut == g);
+  // One replica (16-byte records) is segmented by the rule itself: nothing to try.
+  RotorState single = initial_state(c.d.first_row(), c.d.local_size(), {{6.0, 1.0, 11}});
+  force.evaluate(single, g, sums);
+  CHECK(force.segments() > 1);
+  CHECK(force.segment_candidates().empty());
+  // A width given: no choice.
+  NetworkForce given(c.d, ForcePrecision::float64, k_unsegmented);
+  given.read_caches_as(SegmentTrialCase::caches());
+  given.evaluate(state, g, sums);
+  CHECK(given.segment_candidates().empty());
+}
+
+TEST_CASE(
+    "A sparse run whose column segments are tried on its first steps gives the unblocked bits",
+    "[column_segments][thread_trial]") {
+  SegmentTrialCase c;
+  NetworkForce force(c.d);
+  force.read_caches_as(SegmentTrialCase::caches());
+  NetworkForce unblocked(c.d, ForcePrecision::float64, k_unsegmented);
+  const SimulationParameters p = segment_trial_run();
+  const SimulationResult tried = simulate(c.d, c.net.degrees(), force, p);
+  const SimulationResult plain = simulate(c.d, c.net.degrees(), unblocked, p);
+  CHECK(plain.segment_trial.empty());
+  CHECK(tried.thread_trial.empty());  // a count given
+  INFO(tried.segment_trial);
+  // It ran to its choice (every rank told the slowest rank's times: the same choice).
+  CHECK(tried.segment_trial.find("unsegmented: ") == 0);
+  CHECK(tried.segment_trial.find(", 4 segments: ") != std::string::npos);
+  const bool cut = tried.segment_trial.find("-> 4 segments") != std::string::npos;
+  CHECK((cut || tried.segment_trial.find("-> unsegmented") != std::string::npos));
+  CHECK(force.segments() == (cut ? 4 : 1));  // and went on at it
+  std::string first_rank = tried.segment_trial;
+  ParallelSession::broadcast(first_rank, 0);
+  CHECK(tried.segment_trial.substr(tried.segment_trial.find("->")) ==
+        first_rank.substr(first_rank.find("->")));
+  REQUIRE(tried.steps == plain.steps);
+  CHECK(tried.series.R == plain.series.R);
+  CHECK(tried.series.energy == plain.series.energy);
+  CHECK(tried.series.momentum == plain.series.momentum);
+  REQUIRE(tried.points.size() == plain.points.size());
+  for (std::size_t k = 0; k < plain.points.size(); ++k)
+    CHECK(tried.points[k].R_mean == plain.points[k].R_mean);
 }
