@@ -111,8 +111,9 @@ std::size_t segmented_bytes(EdgeOffset nnz, NodeIndex rows, int segments, NodeIn
 /// (the unblocked rows run wide_rows.hpp's loops for this count). Slices in L3 also leave the
 /// rows unblocked where the carried sums would move more bytes than the gathered lines they save,
 /// both from memory (a record of 64 bytes or more fills its lines: float64 with 4 and 8
-/// replicas, float32 with 8, ran 1.2-2.2x faster unsegmented at N = 10^6 on the AMD EPYC); an L3
-/// as large as the Intel Xeon's holds the carry. record_bytes = 2 x replicas x sizeof(the
+/// replicas, float32 with 8, ran 1.2-2.2x faster unsegmented at N = 10^6 on the AMD EPYC family
+/// 25 model 1 guest; a run tries those slices too: trial_segment_width); an L3 as large as the
+/// Intel Xeon's holds the carry. record_bytes = 2 x replicas x sizeof(the
 /// table's type).
 NodeIndex automatic_segment_width(NodeIndex columns, EdgeOffset nnz, NodeIndex rows,
                                   std::size_t record_bytes, CacheSizes caches,

@@ -160,6 +160,14 @@ class Run {
   void restore(const Checkpoint& c);
   std::int64_t rotor_samples() const;
   void consider_segment_trial();
+  /// The steps the next chunk may take for the trials: the active one's chunk_limit(); one step
+  /// where the segments' trial is still to be considered (the force is prepared by that step, and
+  /// the trial has the rest of the run); no limit otherwise.
+  std::int64_t trial_chunk_limit() const {
+    if (m_trial.active()) return m_trial.chunk_limit();
+    if (!m_segments_considered) return 1;
+    return m_segment_trial.chunk_limit();
+  }
   /// Every chunk of a trial: runs it at the candidate being tried, tells the trial its time.
   void advance_in_trials(std::int64_t n, const std::vector<double>& K, std::int64_t kind,
                          std::vector<double>* order);
@@ -509,9 +517,7 @@ SimulationResult Run::execute() {
           return m_result;
         }
       }
-      // No limit where no trial is active.
-      const std::int64_t n = std::min(
-          {chunk_end(left) - m_seg.step, m_trial.chunk_limit(), m_segment_trial.chunk_limit()});
+      const std::int64_t n = std::min(chunk_end(left) - m_seg.step, trial_chunk_limit());
       const bool sampled = m_seg.step >= transient;  // every step of the chunk, or none
       order.clear();
       // Steps of one kind cost the same: one segment's integrator and step, sampled or not.

@@ -414,16 +414,17 @@ struct SegmentTrialCase {
   static CacheSizes caches() { return {std::size_t{8} << 10, std::size_t{32} << 10, 1, true}; }
 };
 
-/// Two K of 5000 steps with 4 replicas: a step is ~2.2 10^5 stored entries x lanes (on 2 ranks
+/// One K of 10,000 steps with 4 replicas: a step is ~2.2 10^5 stored entries x lanes (on 2 ranks
 /// the heavier rank's ~1.1 10^5), so samples of 19 steps (38 on 2 ranks) and 2 x 3 x 20 = 120
 /// trial steps (234), under 1/40 of the 10,000 (simulation.cpp: consider_segment_trial).
 SimulationParameters segment_trial_run() {
   SimulationParameters p = test::short_run();
   p.h = 0.04;
-  p.duration = 200.0;
-  p.transient = 2.0;
-  p.K = {20.0, 60.0};
-  p.record_stride = 100;
+  p.duration = 400.0;
+  // No transient and one record: the run's first chunk would otherwise be the whole run.
+  p.transient = 0.0;
+  p.K = {40.0};
+  p.record_stride = 1'000'000;
   p.replicas = {{6.0, 1.0, 11}, {6.0, 1.0, 12}, {6.0, 1.0, 13}, {6.0, 1.0, 14}};
   p.threads = 1;
   return p;
