@@ -591,7 +591,10 @@ void Run::consider_segment_trial() {
   std::vector<std::string> labels;
   for (const int count : m_segment_counts)
     labels.push_back(count == 1 ? "unsegmented" : std::to_string(count) + " segments");
-  StepTrial trial({0, 1}, sample_steps, k_trial_samples, std::move(labels));
+  // By candidate: the unblocked rows' samples, then the slices' (one cut of the columns, no
+  // rebuild of them unless the unblocked rows win).
+  StepTrial trial({0, 1}, sample_steps, k_trial_samples, std::move(labels),
+                  SampleOrder::by_candidate);
   if (trial_fits(trial, total_steps(m_params) - static_cast<double>(m_result.steps)))
     m_segment_trial = std::move(trial);
 }

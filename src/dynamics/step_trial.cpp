@@ -7,11 +7,12 @@
 namespace hmfnet {
 
 StepTrial::StepTrial(std::vector<int> candidates, std::int64_t sample_steps, int samples,
-                     std::vector<std::string> labels)
+                     std::vector<std::string> labels, SampleOrder order)
     : m_candidates(std::move(candidates)),
       m_labels(std::move(labels)),
       m_sample_steps(sample_steps),
-      m_samples(samples) {
+      m_samples(samples),
+      m_order(order) {
   if (m_candidates.empty() || sample_steps < 1 || samples < 1) {
     throw std::invalid_argument("StepTrial: candidates, sample steps and samples must be given");
   }
@@ -65,8 +66,10 @@ void StepTrial::restart() {
 }
 
 std::int64_t StepTrial::steps() const {
-  return static_cast<std::int64_t>(m_candidates.size()) * m_samples *
-         (m_sample_steps + k_trial_warm_steps);
+  const auto candidates = static_cast<std::int64_t>(m_candidates.size());
+  if (m_order == SampleOrder::by_candidate)
+    return candidates * (m_samples * m_sample_steps + k_trial_warm_steps);
+  return candidates * m_samples * (m_sample_steps + k_trial_warm_steps);
 }
 
 void StepTrial::add(std::int64_t steps, double seconds, std::int64_t kind) {
@@ -113,6 +116,16 @@ void StepTrial::add(std::int64_t steps, double seconds, std::int64_t kind) {
 
 /// The next candidate not dropped, in this round or the next; the first is never dropped.
 void StepTrial::advance() {
+  if (m_order == SampleOrder::by_candidate) {
+    if (++m_round < m_samples && !m_dropped[m_candidate]) return;  // the same candidate again
+    m_round = 0;
+    if (++m_candidate == m_candidates.size()) {
+      finish();
+      return;
+    }
+    m_warm = true;
+    return;
+  }
   const int last = m_candidates[m_candidate];
   do {
     if (++m_candidate == m_candidates.size()) {

@@ -63,6 +63,14 @@ inline constexpr double k_trial_abandon = 2.0;
 /// ~270,000 units) stay whole: a second thread's cost is then a fraction of a step.
 inline constexpr std::int64_t k_trial_split_steps = 16;
 
+/// The order of the samples: in rounds (every candidate once a round, the protocol above), or
+/// each candidate's samples back to back, the candidates in order: where a change of candidate
+/// costs what rounds would pay several times (the segments' switch from the slices back to the
+/// unblocked rows rebuilds the network's column indices beside the slices' copy: +21% peak RSS
+/// at ER N = 10^6, degree 100, float32 with 8 replicas, docs/performance.md, "A trial of the
+/// column segments").
+enum class SampleOrder { rounds, by_candidate };
+
 class StepTrial {
  public:
   /// No trial: active() is false and the setting stays what the caller set.
@@ -71,7 +79,7 @@ class StepTrial {
   /// the rule's first; `sample_steps` >= 1; `samples` >= 1; `labels`: what summary() calls each
   /// candidate (empty: its number).
   StepTrial(std::vector<int> candidates, std::int64_t sample_steps, int samples,
-            std::vector<std::string> labels = {});
+            std::vector<std::string> labels = {}, SampleOrder order = SampleOrder::rounds);
 
   bool active() const { return m_active; }
   /// The candidate the next chunk runs at (while active).
@@ -84,7 +92,8 @@ class StepTrial {
   /// class (steps of one kind cost the same at a given candidate).
   void add(std::int64_t steps, double seconds, std::int64_t kind);
   /// Steps of one whole trial with every sample taken: candidates x samples x (sample steps +
-  /// k_trial_warm_steps).
+  /// k_trial_warm_steps) in rounds, candidates x (samples x sample steps + k_trial_warm_steps)
+  /// by candidate.
   std::int64_t steps() const;
   /// The candidate chosen once the trial ended; the first candidate before that or if it gave up.
   int chosen() const { return m_chosen; }
@@ -107,6 +116,7 @@ class StepTrial {
   std::vector<std::string> m_labels;  ///< one a candidate
   std::int64_t m_sample_steps = 0;
   int m_samples = 0;
+  SampleOrder m_order = SampleOrder::rounds;
   bool m_active = false;
   int m_chosen = 0;
   int m_restarts = 0;

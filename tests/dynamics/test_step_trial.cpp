@@ -257,6 +257,35 @@ TEST_CASE("A trial's summary names its candidates by their labels", "[thread_tri
   CHECK(trial.summary() == "unsegmented: 2 us, 16 segments: 1 us -> 16 segments");
 }
 
+TEST_CASE("A trial by candidate takes each candidate's samples back to back, one untimed step each",
+          "[thread_trial]") {
+  StepTrial trial({0, 1}, 4, 3, {"unsegmented", "4 segments"}, SampleOrder::by_candidate);
+  CHECK(trial.steps() == 2 * (3 * 4 + 1));
+  std::vector<int> asked;
+  std::vector<std::int64_t> chunks;
+  while (trial.active()) {
+    asked.push_back(trial.candidate());
+    chunks.push_back(trial.chunk_limit());
+    // Candidate 1 is 1.5x faster, its first sample slower (a slow spell, under k_trial_abandon).
+    const double a_step = trial.candidate() == 0 ? 3e-6 : (asked.size() == 6 ? 5e-6 : 2e-6);
+    trial.add(chunks.back(), a_step * static_cast<double>(chunks.back()), 0);
+  }
+  CHECK(asked == std::vector<int>{0, 0, 0, 0, 1, 1, 1, 1});
+  CHECK(chunks == std::vector<std::int64_t>{1, 4, 4, 4, 1, 4, 4, 4});
+  CHECK(trial.chosen() == 1);
+  CHECK(trial.summary() == "unsegmented: 3 us, 4 segments: 2 us -> 4 segments");
+  // A candidate far slower in its first sample takes no more.
+  StepTrial far({0, 1}, 4, 3, {}, SampleOrder::by_candidate);
+  asked.clear();
+  while (far.active()) {
+    asked.push_back(far.candidate());
+    const std::int64_t n = far.chunk_limit();
+    far.add(n, (far.candidate() == 0 ? 1e-6 : 5e-6) * static_cast<double>(n), 0);
+  }
+  CHECK(asked == std::vector<int>{0, 0, 0, 0, 1, 1});
+  CHECK(far.chosen() == 0);
+}
+
 namespace {
 
 /// `p` run with the default count, two threads offered, against the same run on one thread:
@@ -415,8 +444,8 @@ struct SegmentTrialCase {
 };
 
 /// One K of 10,000 steps with 4 replicas: a step is ~2.2 10^5 stored entries x lanes (on 2 ranks
-/// the heavier rank's ~1.1 10^5), so samples of 19 steps (38 on 2 ranks) and 2 x 3 x 20 = 120
-/// trial steps (234), under 1/40 of the 10,000 (simulation.cpp: consider_segment_trial).
+/// the heavier rank's ~1.1 10^5), so samples of 19 steps (38 on 2 ranks) and 2 x (3 x 19 + 1) =
+/// 116 trial steps (230), under 1/40 of the 10,000 (simulation.cpp: consider_segment_trial).
 SimulationParameters segment_trial_run() {
   SimulationParameters p = test::short_run();
   p.h = 0.04;
