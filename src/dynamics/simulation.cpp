@@ -51,12 +51,6 @@ bool trial_fits(const StepTrial& trial, double steps_left) {
   return static_cast<double>(trial.steps()) * k_trial_share <= steps_left;
 }
 
-// The segments' trial (NetworkForce::segment_candidates): a sample is k_trial_sample_work
-// stored entries x lanes a step, at least one step. Where there is a choice a step gathers
-// 10^6 lines and more (a table beyond 8 MiB of 64-byte records, 12 entries a row and more), so
-// its samples are single steps of milliseconds to a second: the untimed step before each holds
-// the force's new cut of its columns (at ER N = 10^6, degree 100, a copy of 10^8 indices).
-
 /// Steps of the whole schedule, every segment.
 double total_steps(const SimulationParameters& p) {
   double total = 0.0;
@@ -577,7 +571,11 @@ void Run::advance_in_trials(std::int64_t n, const std::vector<double>& K, std::i
 // Once, after the first chunk run outside the thread trial (the force has been prepared at the
 // team that goes on): a trial of the force's segment candidates where every rank's force has them
 // (agreed over ranks, so every rank takes the same chunks; each rank runs its own counts) and the
-// trial fits the steps left. Collective.
+// trial fits the steps left. Collective. A sample is k_trial_sample_work stored entries x lanes,
+// at least one step: where there is a choice a step gathers 10^6 lines and more (a table beyond
+// 8 MiB of 64-byte records, 12 entries a row and more), so its samples are single steps of
+// milliseconds to a second, and the untimed step before a candidate's samples holds the force's
+// new cut of its columns (at ER N = 10^6, degree 100, a copy of 10^8 indices).
 void Run::consider_segment_trial() {
   if (m_segments_considered) return;
   m_segments_considered = true;
