@@ -76,7 +76,7 @@ class CouplingForce {
   /// the team size then. A run times its first steps in each (step_trial.hpp).
   virtual std::vector<int> segment_candidates() const { return {}; }
   /// The evaluations from the next prepare on run in `count` segments, one of
-  /// segment_candidates(); the rule's count again where `count` is the first of them.
+  /// segment_candidates(), or 1: the rule's own choice again (whatever its count).
   virtual void use_segments(int /*count*/) {}
   /// Short name for logs and output files ("sparse", "rank-one").
   virtual const char* name() const = 0;

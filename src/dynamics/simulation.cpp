@@ -153,7 +153,8 @@ class Run {
   void finish(bool interrupted);
   void restore(const Checkpoint& c);
   std::int64_t rotor_samples() const;
-  void consider_segment_trial();
+  /// `done`: steps of the chunk just run, not yet counted in m_result.steps.
+  void consider_segment_trial(std::int64_t done);
   /// The steps the next chunk may take for the trials: the active one's chunk_limit(); one step
   /// where the segments' trial is still to be considered (the force is prepared by that step, and
   /// the trial has the rest of the run); no limit otherwise.
@@ -475,6 +476,9 @@ SimulationResult Run::execute() {
   // Before the force's first evaluation, which may take the network's column indices
   // (NetworkForce::take_columns) that the content hash reads.
   if (!m_params.checkpoint_path.empty()) run_fingerprint();
+  // The force's rule again: an earlier run's trial on this force chose for that run, and this one
+  // makes its own or none.
+  m_force.use_segments(1);
   m_stepper->set_state(
       initial_state(m_network.first_row(), m_network.local_size(), m_params.replicas));
   const bool resuming = m_params.resume && !m_params.checkpoint_path.empty() &&
@@ -565,18 +569,21 @@ void Run::advance_in_trials(std::int64_t n, const std::vector<double>& K, std::i
   }
   // Not after the thread trial's last chunk: the force is prepared at the chosen count only by
   // the next one.
-  if (trial != &m_trial) consider_segment_trial();
+  if (trial != &m_trial) consider_segment_trial(n);
 }
 
 // Once, after the first chunk run outside the thread trial (the force has been prepared at the
 // team that goes on): a trial of the force's segment candidates where every rank's force has them
 // (agreed over ranks, so every rank takes the same chunks; each rank runs its own counts) and the
 // trial fits the steps left. Collective. A sample is k_trial_sample_work stored entries x lanes,
-// at least one step: where there is a choice a step gathers 10^6 lines and more (a table beyond
-// 8 MiB of 64-byte records, 12 entries a row and more), so its samples are single steps of
-// milliseconds to a second, and the untimed step before a candidate's samples holds the force's
-// new cut of its columns (at ER N = 10^6, degree 100, a copy of 10^8 indices).
-void Run::consider_segment_trial() {
+// at least one step: where there is a choice on the AMD EPYC guests a step gathers ~10^6 lines
+// and more (a table beyond two 4 MiB slices of 64-byte records, 12 entries a row and more), so
+// its samples are one or a few steps, up to a second each at ER N = 10^6, degree 100, and the
+// untimed step before a candidate's samples holds the force's new cut of its columns (there a
+// copy of 10^8 indices). The labels name the count the trial width would cut; where the cut is
+// refused (rows not sorted by column: column_segments.hpp) both candidates run unblocked, the
+// same bits, and the margin keeps the first.
+void Run::consider_segment_trial(std::int64_t done) {
   if (m_segments_considered) return;
   m_segments_considered = true;
   m_segment_counts =
@@ -593,7 +600,7 @@ void Run::consider_segment_trial() {
   // rebuild of them unless the unblocked rows win).
   StepTrial trial({0, 1}, sample_steps, k_trial_samples, std::move(labels),
                   SampleOrder::by_candidate);
-  if (trial_fits(trial, total_steps(m_params) - static_cast<double>(m_result.steps)))
+  if (trial_fits(trial, total_steps(m_params) - static_cast<double>(m_result.steps + done)))
     m_segment_trial = std::move(trial);
 }
 

@@ -114,7 +114,8 @@ void StepTrial::add(std::int64_t steps, double seconds, std::int64_t kind) {
   advance();
 }
 
-/// The next candidate not dropped, in this round or the next; the first is never dropped.
+/// In rounds: the next candidate not dropped, in this round or the next; the first is never
+/// dropped. By candidate: the same candidate's next sample, else the next candidate's first.
 void StepTrial::advance() {
   if (m_order == SampleOrder::by_candidate) {
     if (++m_round < m_samples && !m_dropped[m_candidate]) return;  // the same candidate again

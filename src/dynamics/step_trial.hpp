@@ -42,7 +42,8 @@ namespace hmfnet {
 inline constexpr double k_trial_margin = 0.03;
 /// How often a change of the chunks' kind may start the trial again before it gives up.
 inline constexpr int k_trial_restarts = 2;
-/// Untimed steps before each timed sample at a candidate other than the last chunk's.
+/// Untimed steps before a candidate's sample where the candidate changes, and before the first
+/// candidate's first sample (the step at which the trial starts may not be of its kind).
 inline constexpr std::int64_t k_trial_warm_steps = 1;
 /// A candidate this much slower than the fastest before it, in the first round, is dropped:
 /// an all-cores team that sleeps at every barrier may run many times slower than one thread.

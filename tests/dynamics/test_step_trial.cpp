@@ -3,6 +3,7 @@
 // of one thread and of the unblocked rows.
 #include <omp.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <limits>
@@ -284,6 +285,18 @@ TEST_CASE("A trial by candidate takes each candidate's samples back to back, one
   }
   CHECK(asked == std::vector<int>{0, 0, 0, 0, 1, 1});
   CHECK(far.chosen() == 0);
+  // A chunk of another kind during the second candidate's samples starts again at the first,
+  // with its untimed step.
+  StepTrial kinds({0, 1}, 4, 2, {}, SampleOrder::by_candidate);
+  kinds.add(1, 1e-6, 0);
+  kinds.add(4, 4e-6, 0);
+  kinds.add(4, 4e-6, 0);
+  REQUIRE(kinds.candidate() == 1);
+  kinds.add(1, 1e-6, 0);  // its untimed step
+  kinds.add(4, 4e-6, 1);  // sampled steps now
+  CHECK(kinds.active());
+  CHECK(kinds.candidate() == 0);
+  CHECK(kinds.chunk_limit() == 1);
 }
 
 namespace {
@@ -443,6 +456,17 @@ struct SegmentTrialCase {
   static CacheSizes caches() { return {std::size_t{8} << 10, std::size_t{32} << 10, 1, true}; }
 };
 
+/// A sparse force that records the segment counts a run asks it for.
+class RecordingForce : public NetworkForce {
+ public:
+  using NetworkForce::NetworkForce;
+  void use_segments(int count) override {
+    asked.push_back(count);
+    NetworkForce::use_segments(count);
+  }
+  std::vector<int> asked;
+};
+
 /// One K of 10,000 steps with 4 replicas: a step is ~2.2 10^5 stored entries x lanes (on 2 ranks
 /// the heavier rank's ~1.1 10^5), so samples of 19 steps (38 on 2 ranks) and 2 x (3 x 19 + 1) =
 /// 116 trial steps (230), under 1/40 of the 10,000 (simulation.cpp: consider_segment_trial).
@@ -502,7 +526,7 @@ TEST_CASE(
     "A sparse run whose column segments are tried on its first steps gives the unblocked bits",
     "[column_segments][thread_trial]") {
   SegmentTrialCase c;
-  NetworkForce force(c.d);
+  RecordingForce force(c.d);
   force.read_caches_as(SegmentTrialCase::caches());
   NetworkForce unblocked(c.d, ForcePrecision::float64, k_unsegmented);
   const SimulationParameters p = segment_trial_run();
@@ -517,6 +541,12 @@ TEST_CASE(
   const bool cut = tried.segment_trial.find("-> 4 segments") != std::string::npos;
   CHECK((cut || tried.segment_trial.find("-> unsegmented") != std::string::npos));
   CHECK(force.segments() == (cut ? 4 : 1));  // and went on at it
+  // The rule's choice first (an earlier run's is not this one's), the slices' samples in 4
+  // segments, the choice last.
+  REQUIRE(force.asked.size() >= 3);
+  CHECK(force.asked.front() == 1);
+  CHECK(std::count(force.asked.begin(), force.asked.end(), 4) >= 1);
+  CHECK(force.asked.back() == (cut ? 4 : 1));
   std::string first_rank = tried.segment_trial;
   ParallelSession::broadcast(first_rank, 0);
   CHECK(tried.segment_trial.substr(tried.segment_trial.find("->")) ==
