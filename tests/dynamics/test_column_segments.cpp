@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "dynamics/column_segments.hpp"
@@ -18,6 +19,7 @@
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
 #include "parallel/network_content_hash.hpp"
+#include "support/bit_difference.hpp"
 #include "support/simulation_runs.hpp"
 #include "support/small_networks.hpp"
 
@@ -48,10 +50,20 @@ RotorState state(const DistributedNetwork& d, int replicas) {
   return initial_state(d.first_row(), d.local_size(), ic);
 }
 
-// Exact equality of every output: g, the local fields y and both sums of every replica.
-bool same_bits(const Evaluation& a, const Evaluation& b) {
-  return a.g == b.g && a.y == b.y && a.sums.order == b.sums.order &&
-         a.sums.coupling == b.sums.coupling;
+// Where any output differs in its bits (g, the local fields y, both sums of every replica),
+// named; "" where none does.
+std::string bit_difference(const Evaluation& a, const Evaluation& b) {
+  std::string out;
+  const auto add = [&](const char* name, const std::vector<double>& x,
+                       const std::vector<double>& y) {
+    const std::string d = test::bit_difference(x, y);
+    if (!d.empty()) out += std::string(out.empty() ? "" : "; ") + name + ": " + d;
+  };
+  add("g", a.g, b.g);
+  add("y", a.y, b.y);
+  add("order", a.sums.order, b.sums.order);
+  add("coupling", a.sums.coupling, b.sums.coupling);
+  return out;
 }
 
 // Threads for the scope, restored after.
@@ -87,7 +99,7 @@ TEST_CASE("segmented force equals the unblocked force bit for bit [ER N=603, wid
                  << ", " << to_string(precision) << ", B = " << replicas << ", " << threads
                  << " thread(s), width " << width << " (" << cut.segments << " segments)");
             CHECK(cut.segments > 1);
-            CHECK(same_bits(cut, unblocked));
+            CHECK(bit_difference(cut, unblocked) == "");
           }
         }
       }
@@ -118,7 +130,7 @@ TEST_CASE("16-bit and 32-bit segment indices give the unblocked force's bits [ER
         const Evaluation cut = evaluate(d, precision, width, s);
         INFO(to_string(precision) << ", B = " << replicas << ", width " << width);
         CHECK(cut.segments == 3);
-        CHECK(same_bits(cut, unblocked));
+        CHECK(bit_difference(cut, unblocked) == "");
       }
     }
   }
@@ -136,7 +148,7 @@ TEST_CASE("segmented force with fewer rows than panels and threads [ER N=5, 4 th
     const Evaluation cut = evaluate(d, ForcePrecision::float64, 1, s);
     INFO("B = " << replicas);
     CHECK(cut.segments > 1);
-    CHECK(same_bits(cut, unblocked));
+    CHECK(bit_difference(cut, unblocked) == "");
   }
 }
 
@@ -181,7 +193,7 @@ TEST_CASE("runs of 255 entries and more (hubs) give the unblocked force's bits [
       const Evaluation cut = evaluate(d, precision, 400, s);
       INFO(to_string(precision) << ", B = " << replicas);
       CHECK(cut.segments == 4);
-      CHECK(same_bits(cut, unblocked));
+      CHECK(bit_difference(cut, unblocked) == "");
     }
   }
 }
@@ -236,7 +248,7 @@ TEST_CASE("segments that take the indices give their pages back as they go [ER N
     in_team([&] { force.evaluate(s, e.g, e.sums); });
     e.y = force.local_fields();
     INFO("B = " << replicas);
-    CHECK(same_bits(e, unblocked));
+    CHECK(bit_difference(e, unblocked) == "");
   }
 }
 
@@ -283,7 +295,8 @@ TEST_CASE("a force that takes the network's column indices: the same run, resume
     CHECK(last.points[k].R_mean == whole.points[k].R_mean);
     CHECK(last.points[k].energy_rel_error_max == whole.points[k].energy_rel_error_max);
     CHECK(last.points[k].R_node == whole.points[k].R_node);
-    CHECK(last.points[k].rotor_theta_bar == whole.points[k].rotor_theta_bar);
+    CHECK(test::bit_difference(last.points[k].rotor_theta_bar, whole.points[k].rotor_theta_bar) ==
+          "");
   }
   CHECK(last.series.energy == whole.series.energy);
   test::remove_on_root(p.checkpoint_path);
@@ -312,8 +325,8 @@ TEST_CASE("segmented leap-frog trajectories equal unblocked ones bit for bit [ER
           INFO((net->weighted() ? "weighted" : "0/1")
                << ", " << to_string(precision) << ", B = " << replicas << ", " << threads
                << " thread(s)");
-          CHECK(cut.theta == unblocked.theta);
-          CHECK(cut.p == unblocked.p);
+          CHECK(test::bit_difference(cut.theta, unblocked.theta) == "");
+          CHECK(test::bit_difference(cut.p, unblocked.p) == "");
         }
       }
     }

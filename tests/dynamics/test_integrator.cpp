@@ -13,6 +13,7 @@
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_network.hpp"
 #include "parallel/parallel_session.hpp"
+#include "support/bit_difference.hpp"
 
 using namespace hmfnet;
 
@@ -123,8 +124,8 @@ TEST_CASE("Force and state are bit-identical with 1 and 2 OpenMP threads", "[int
     finals.push_back(s);
   }
   omp_set_num_threads(saved);
-  REQUIRE(finals[0].theta == finals[1].theta);
-  REQUIRE(finals[0].p == finals[1].p);
+  REQUIRE(test::bit_difference(finals[0].theta, finals[1].theta) == "");
+  REQUIRE(test::bit_difference(finals[0].p, finals[1].p) == "");
 }
 
 TEST_CASE("Kick and kick-drift of one replica take the general loop's operations, bit for bit",
@@ -157,15 +158,15 @@ TEST_CASE("Kick and kick-drift of one replica take the general loop's operations
     RotorState s = state;
 #pragma omp parallel
     kick_drift(s, c_kick, K, g, c_drift);
-    CHECK(s.p == expected.p);
-    CHECK(s.theta == expected.theta);
+    CHECK(test::bit_difference(s.p, expected.p) == "");
+    CHECK(test::bit_difference(s.theta, expected.theta) == "");
     RotorState kicked = state;
 #pragma omp parallel
     kick(kicked, c_kick, K, g);
     std::vector<double> p_expected = state.p;
     for (std::size_t k = 0; k < g.size(); ++k) p_expected[k] += c_kick * K[0] * g[k];
-    CHECK(kicked.p == p_expected);
-    CHECK(kicked.theta == state.theta);
+    CHECK(test::bit_difference(kicked.p, p_expected) == "");
+    CHECK(test::bit_difference(kicked.theta, state.theta) == "");
   }
 }
 
@@ -204,10 +205,10 @@ void check_steps_against_step(CouplingForce& force, NodeIndex first_row, NodeInd
           order_many.insert(order_many.end(), f_many.sums().order.begin(),
                             f_many.sums().order.end());
         });
-        CHECK(many.theta == one.theta);
-        CHECK(many.p == one.p);
-        CHECK(f_many.g() == f_one.g());
-        CHECK(order_many == order_one);
+        CHECK(test::bit_difference(many.theta, one.theta) == "");
+        CHECK(test::bit_difference(many.p, one.p) == "");
+        CHECK(test::bit_difference(f_many.g(), f_one.g()) == "");
+        CHECK(test::bit_difference(order_many, order_one) == "");
         CHECK(f_many.count() == f_one.count());
         // Without after_step only the last step forms the sums (coupling_force.hpp:
         // ForceOutputs): the same state and the same last sums.
@@ -215,12 +216,12 @@ void check_steps_against_step(CouplingForce& force, NodeIndex first_row, NodeInd
         ForceEvaluation f_quiet(force);
         f_quiet.update(quiet);
         method->steps(quiet, 0.01, K, f_quiet, n, {});
-        CHECK(quiet.theta == one.theta);
-        CHECK(quiet.p == one.p);
+        CHECK(test::bit_difference(quiet.theta, one.theta) == "");
+        CHECK(test::bit_difference(quiet.p, one.p) == "");
         CHECK(f_quiet.sums_current());
-        CHECK(f_quiet.sums().order == f_one.sums().order);
-        CHECK(f_quiet.sums().coupling == f_one.sums().coupling);
-        CHECK(f_many.sums().coupling == f_one.sums().coupling);
+        CHECK(test::bit_difference(f_quiet.sums().order, f_one.sums().order) == "");
+        CHECK(test::bit_difference(f_quiet.sums().coupling, f_one.sums().coupling) == "");
+        CHECK(test::bit_difference(f_many.sums().coupling, f_one.sums().coupling) == "");
       }
     }
   }

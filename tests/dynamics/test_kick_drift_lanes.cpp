@@ -13,6 +13,7 @@
 #include "dynamics/kernel_arithmetic.hpp"
 #include "dynamics/kick_drift_lanes.hpp"
 #include "dynamics/sincos.hpp"
+#include "support/bit_difference.hpp"
 
 using namespace hmfnet;
 
@@ -43,11 +44,6 @@ struct Cells {
     return {p.data(), drift ? theta.data() : nullptr, g.data(), K.data(), w};
   }
 };
-
-// Bit for bit (NaN compares unequal to itself, -0.0 equal to +0.0).
-bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
-}
 
 }  // namespace
 
@@ -93,14 +89,14 @@ TEST_CASE("the kick and drift lanes give the scalar cell's bits in every instruc
                      << " kicks, rows " << range.first << ".." << range.second);
                 Cells cells(rows, w, zero_couplings);
                 kick_drift_rows_isa(isa, cells.view(w, drift), c, range.first, range.second);
-                CHECK(same_bits(cells.p, expected.p));
-                CHECK(same_bits(cells.theta, expected.theta));
+                CHECK(test::bit_difference(cells.p, expected.p) == "");
+                CHECK(test::bit_difference(cells.theta, expected.theta) == "");
               }
               // The default set is one of them.
               Cells cells(rows, w, zero_couplings);
               kick_drift_rows(cells.view(w, drift), c, range.first, range.second);
-              CHECK(same_bits(cells.p, expected.p));
-              CHECK(same_bits(cells.theta, expected.theta));
+              CHECK(test::bit_difference(cells.p, expected.p) == "");
+              CHECK(test::bit_difference(cells.theta, expected.theta) == "");
             }
           }
         }

@@ -19,6 +19,7 @@
 #include "dynamics/rank_one_fused.hpp"
 #include "dynamics/team.hpp"
 #include "dynamics/thread_choice.hpp"
+#include "support/bit_difference.hpp"
 
 using namespace hmfnet;
 
@@ -117,21 +118,21 @@ void check_fused(const RankOneStructure& structure, Rows rows, int count, int th
   plain.prepare(apart.state, apart.g, apart.sums);
   in_team([&] { fusing.evaluate(fused.state, fused.g, fused.sums); });
   in_team([&] { plain.evaluate(apart.state, apart.g, apart.sums); });
-  REQUIRE(fused.g == apart.g);
+  REQUIRE(test::bit_difference(fused.g, apart.g) == "");
   REQUIRE(fuses_in_team(fusing, fused.state));
   // One pass `c` both ways, then the same state.
   const auto pass = [&](const KickDriftCoefficients& c, ForceOutputs outputs) {
     in_team([&] { fusing.kick_drift_evaluate(fused.state, K, c, fused.g, fused.sums, outputs); });
     separate(apart.state, K, c, plain, apart.g, apart.sums, outputs);
-    CHECK(fused.state.theta == apart.state.theta);
-    CHECK(fused.state.p == apart.state.p);
+    CHECK(test::bit_difference(fused.state.theta, apart.state.theta) == "");
+    CHECK(test::bit_difference(fused.state.p, apart.state.p) == "");
   };
   pass(first, ForceOutputs::force_only);
   pass(joined, ForceOutputs::force_and_sums);
-  CHECK(fused.g == apart.g);
-  CHECK(fused.sums.order == apart.sums.order);
-  CHECK(fused.sums.coupling == apart.sums.coupling);
-  CHECK(fusing.local_fields() == plain.local_fields());
+  CHECK(test::bit_difference(fused.g, apart.g) == "");
+  CHECK(test::bit_difference(fused.sums.order, apart.sums.order) == "");
+  CHECK(test::bit_difference(fused.sums.coupling, apart.sums.coupling) == "");
+  CHECK(test::bit_difference(fusing.local_fields(), plain.local_fields()) == "");
 }
 
 // `name`'s 17 steps on the rank-one force, fused where it fuses (`fuses`, asked inside the team),
@@ -157,12 +158,12 @@ void check_steps(const std::string& name, NodeIndex n, int count, int threads, b
   };
   method->steps(a, 0.05, K, fa, 17, after(fa, order_a));
   method->steps(b, 0.05, K, fb, 17, after(fb, order_b));
-  CHECK(a.theta == b.theta);
-  CHECK(a.p == b.p);
-  CHECK(fa.g() == fb.g());
-  CHECK(order_a == order_b);
-  CHECK(fa.sums().order == fb.sums().order);
-  CHECK(fa.sums().coupling == fb.sums().coupling);
+  CHECK(test::bit_difference(a.theta, b.theta) == "");
+  CHECK(test::bit_difference(a.p, b.p) == "");
+  CHECK(test::bit_difference(fa.g(), fb.g()) == "");
+  CHECK(test::bit_difference(order_a, order_b) == "");
+  CHECK(test::bit_difference(fa.sums().order, fb.sums().order) == "");
+  CHECK(test::bit_difference(fa.sums().coupling, fb.sums().coupling) == "");
   CHECK(fa.count() == fb.count());
 }
 
@@ -246,10 +247,10 @@ TEST_CASE("The rank-one fused pass has the same bits in every instruction set",
         if (!sincos_isa_available(isa)) continue;
         INFO(sincos_isa_name(isa));
         const Run wide = run(isa);
-        CHECK(wide.state.theta == baseline.state.theta);
-        CHECK(wide.state.p == baseline.state.p);
-        CHECK(wide.g == baseline.g);                    // the new [cos, sin]
-        CHECK(wide.sums.order == baseline.sums.order);  // the groups' Z
+        CHECK(test::bit_difference(wide.state.theta, baseline.state.theta) == "");
+        CHECK(test::bit_difference(wide.state.p, baseline.state.p) == "");
+        CHECK(test::bit_difference(wide.g, baseline.g) == "");  // the new [cos, sin]
+        CHECK(test::bit_difference(wide.sums.order, baseline.sums.order) == "");  // the groups' Z
       }
     }
   }
@@ -289,7 +290,7 @@ TEST_CASE("The rank-one force fuses only where its last evaluation was at the st
   CHECK_FALSE(shared.fuses_kick_drift(s1));
   LeapFrog().steps(s1, 0.05, K, f1, 5, {});
   LeapFrog().steps(expected, 0.05, K, f_expected, 5, {});
-  CHECK(s1.theta == expected.theta);
-  CHECK(s1.p == expected.p);
-  CHECK(f1.g() == f_expected.g());
+  CHECK(test::bit_difference(s1.theta, expected.theta) == "");
+  CHECK(test::bit_difference(s1.p, expected.p) == "");
+  CHECK(test::bit_difference(f1.g(), f_expected.g()) == "");
 }

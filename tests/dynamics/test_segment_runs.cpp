@@ -14,6 +14,7 @@
 
 #include "dynamics/column_segments.hpp"
 #include "dynamics/segment_runs.hpp"
+#include "support/bit_difference.hpp"
 #include "support/random_rows.hpp"
 
 using namespace hmfnet;
@@ -34,11 +35,6 @@ std::vector<T> table(NodeIndex columns, int replicas, std::uint64_t seed) {
                        std::numeric_limits<T>::quiet_NaN()};
   for (std::size_t k = 0; k < t.size(); k += 97) t[k] = special[(k / 97) % 5];
   return t;
-}
-
-template <typename T>
-bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
 }
 
 // Both versions over every segment of `cut` (indices of type I) for rows [origin, n), their
@@ -73,7 +69,7 @@ void compare(const Rows& rows, const ColumnSegments& cut, const std::vector<T>& 
     add_segment_runs(scalar_pass, replicas, origin, n, false);
     INFO("segment " << s << " of " << cut.count() << ", B = " << replicas << ", rows from "
                     << origin << ", split at " << split_row);
-    REQUIRE(same_bits(carry_vector, carry_scalar));
+    REQUIRE(test::bit_difference(carry_vector, carry_scalar) == "");
     REQUIRE(cursor_vector == cursor_scalar);
   }
 }

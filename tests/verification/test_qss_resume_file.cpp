@@ -13,7 +13,9 @@
 #include <vector>
 
 #include "qss_resume_file.hpp"
+#include "support/bit_difference.hpp"
 
+using hmfnet::test::bit_difference;
 using hmfnet::verification::QssResumeSize;
 using hmfnet::verification::read_qss_resume;
 using hmfnet::verification::write_qss_resume;
@@ -42,10 +44,6 @@ QssResumeSize filled(std::int64_t n, std::int64_t replicas, std::int64_t records
   }
   s.R_mean.back() = std::numeric_limits<double>::quiet_NaN();  // a record not yet written
   return s;
-}
-
-bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
 }
 
 std::string error_of(const std::string& path) {
@@ -81,10 +79,10 @@ TEST_CASE("the QSS resume file keeps every value's bits", "[qss_resume_file]") {
     CHECK(back[i].records == sizes[i].records);
     CHECK(back[i].steps_planned == sizes[i].steps_planned);
     CHECK(back[i].steps_done == sizes[i].steps_done);
-    CHECK(same_bits(back[i].R_mean, sizes[i].R_mean));
-    CHECK(same_bits(back[i].energy, sizes[i].energy));
-    CHECK(same_bits(back[i].theta, sizes[i].theta));
-    CHECK(same_bits(back[i].p, sizes[i].p));
+    CHECK(bit_difference(back[i].R_mean, sizes[i].R_mean) == "");
+    CHECK(bit_difference(back[i].energy, sizes[i].energy) == "");
+    CHECK(bit_difference(back[i].theta, sizes[i].theta) == "");
+    CHECK(bit_difference(back[i].p, sizes[i].p) == "");
   }
   write_qss_resume(path, {});
   CHECK(read_qss_resume(path).empty());
