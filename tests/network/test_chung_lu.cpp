@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "network/chung_lu.hpp"
+#include "support/bit_difference.hpp"
 #include "support/tolerances.hpp"
 
 using namespace hmfnet;
@@ -112,7 +113,7 @@ TEST_CASE("Chung-Lu is reproducible from its seed and rejects bad parameters", "
   REQUIRE(w == power_law_targets(3000, {3.1, 20.0}, 8));
   const Network a = chung_lu(w, LinkProbability::capped, 4);
   const Network b = chung_lu(w, LinkProbability::capped, 4);
-  REQUIRE(a.cols() == b.cols());
+  REQUIRE(test::bit_difference(a.cols(), b.cols()) == "");
   REQUIRE(chung_lu(w, LinkProbability::capped, 5).cols() != a.cols());
   REQUIRE_THROWS_AS(power_law_targets(10, {2.0, 10.0}, 1), ParameterError);
   REQUIRE_THROWS_AS(power_law_targets(10, {2.5, -1.0}, 1), ParameterError);

@@ -13,6 +13,7 @@
 #include "network/erdos_renyi.hpp"
 #include "parallel/distributed_text_read.hpp"
 #include "parallel/parallel_session.hpp"
+#include "support/bit_difference.hpp"
 #include "support/shared_file.hpp"
 #include "support/weighted_networks.hpp"
 
@@ -92,9 +93,9 @@ void check_equals_serial(const SharedFile& file, const ReadOptions& options = {}
         balanced_row_starts(
             net.row_ptr(),
             ParallelSession::ranks())[static_cast<std::size_t>(ParallelSession::rank())]);
-  CHECK(rows.block.row_ptr == expected.row_ptr);
-  CHECK(rows.block.cols == expected.cols);
-  CHECK(rows.block.weights == expected.weights);
+  CHECK(test::bit_difference(rows.block.row_ptr, expected.row_ptr) == "");
+  CHECK(test::bit_difference(rows.block.cols, expected.cols) == "");
+  CHECK(test::bit_difference(rows.block.weights, expected.weights) == "");
   CHECK(rows.warnings == serial.result.warnings);
   const double covered = ParallelSession::sum(static_cast<double>(rows.block.rows()));
   CHECK(covered == static_cast<double>(net.size()));
