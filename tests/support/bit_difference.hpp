@@ -36,8 +36,9 @@ std::string bit_difference(const std::vector<T>& actual, const std::vector<T>& e
     if (count++ == 0) first = k;
   }
   if (count == 0) return "";
-  // Integers print as integers; char-sized ones as numbers, not characters.
-  using Printed = std::conditional_t<std::is_floating_point_v<T>, T, long long>;
+  // Integers print as integers of their signedness; char-sized ones as numbers, not characters.
+  using Integer = std::conditional_t<std::is_signed_v<T>, long long, unsigned long long>;
+  using Printed = std::conditional_t<std::is_floating_point_v<T>, T, Integer>;
   out << std::setprecision(std::numeric_limits<T>::max_digits10) << count << " of " << actual.size()
       << " values differ, the first at " << first << ": " << static_cast<Printed>(actual[first])
       << " where " << static_cast<Printed>(expected[first]) << " was expected";

@@ -32,6 +32,10 @@ TEST_CASE("bit_difference: -0.0 and 0.0 differ, a NaN of the same bits does not"
 TEST_CASE("bit_difference: integers print as numbers", "[bit_difference]") {
   CHECK(bit_difference(std::vector<std::uint8_t>{7, 65}, std::vector<std::uint8_t>{7, 66}) ==
         "1 of 2 values differ, the first at 1: 65 where 66 was expected");
+  // An unsigned 64-bit index above the signed range prints as itself, not wrapped negative.
+  CHECK(bit_difference(std::vector<std::uint64_t>{~std::uint64_t{0}},
+                       std::vector<std::uint64_t>{0}) ==
+        "1 of 1 values differ, the first at 0: 18446744073709551615 where 0 was expected");
 }
 
 TEST_CASE("bit_difference: a difference in 10^6 values is reported at once", "[bit_difference]") {
