@@ -114,6 +114,20 @@ Item item(const OrderedColumnSums& sums, std::size_t i, std::size_t w) {
   return {block, sums.first_row(block), sums.first_row(block + 1), b0, std::min(k_group, w - b0)};
 }
 
+// The calling thread's share of `items` work items, as schedule(static) shares a loop: one
+// contiguous range a thread, the first items % threads ranges one item longer.
+struct ItemRange {
+  std::size_t begin, end;
+};
+
+ItemRange thread_items(std::size_t items) {
+  const auto threads = static_cast<std::size_t>(omp_get_num_threads());
+  const auto t = static_cast<std::size_t>(omp_get_thread_num());
+  const std::size_t base = items / threads, extra = items % threads;
+  const std::size_t begin = t * base + std::min(t, extra);
+  return {begin, begin + base + (t < extra ? 1 : 0)};
+}
+
 // kernel(std::integral_constant<std::size_t, NB>) with the item's replica count fixed at compile
 // time where it is common (one replica; a whole group), NB = 0 otherwise.
 template <typename Kernel>
@@ -518,11 +532,20 @@ void RankOneForce::compute_kick_drift(RotorState& state, const std::vector<doubl
                                 state.theta.data(),
                                 K.data(),
                                 w};
-#pragma omp for schedule(static)
-  for (std::size_t i = 0; i < items; ++i) {
+  // Each thread's items as a static schedule shares them (one contiguous range, the same work a
+  // thread as before), and the items of one block in that range in one call: its groups then
+  // take each stage of rows side by side (rank_one_fused.cpp: fused_rows).
+  const ItemRange mine = thread_items(items);
+  for (std::size_t i = mine.begin; i < mine.end;) {
     const Item it = item(m_z_sums, i, w);
-    rank_one_fused_group(sincos_isa(), fused, c, it.r0, it.r1, it.b0, m_z_sums.partial(it.block));
+    std::size_t next = i + 1;
+    while (next < mine.end && next / groups(w) == it.block) ++next;
+    const std::size_t b1 = it.b0 + (next - i) * k_group;
+    rank_one_fused_groups(sincos_isa(), fused, c, it.r0, it.r1, it.b0, b1,
+                          m_z_sums.partial(it.block));
+    i = next;
   }
+#pragma omp barrier
   reduce_z(state, outputs == ForceOutputs::force_and_sums ? g.data() : nullptr);
   // g at the new phases only where the sums are formed: a force_only call leaves the last
   // evaluation's g (coupling_force.hpp), which the next fused call forms again from its own data.

@@ -59,9 +59,9 @@ class RankOneForce : public CouplingForce {
  private:
   void compute(const RotorState& state, std::vector<double>& g, ForceSums& sums,
                ForceOutputs outputs) override;
-  /// One pass over the cells (rank_one_fused_group per work item): the field at the last
-  /// evaluation's [cos, sin] and Z, the kicks and the drift, the new sin/cos and Z; then, with
-  /// the sums, the field pass.
+  /// One pass over the cells (rank_one_fused_groups, a thread's items of a block in one call): the
+  /// field at the last evaluation's [cos, sin] and Z, the kicks and the drift, the new sin/cos and
+  /// Z; then, with the sums, the field pass.
   void compute_kick_drift(RotorState& state, const std::vector<double>& K,
                           const KickDriftCoefficients& c, std::vector<double>& g, ForceSums& sums,
                           ForceOutputs outputs) override;

@@ -1,5 +1,5 @@
 #pragma once
-// The rank-one force's kick, drift and evaluation in one pass over a group of 8 replicas
+// The rank-one force's kick, drift and evaluation in one pass over groups of 8 replicas
 // (CouplingForce::kick_drift_evaluate, which RankOneForce implements: rank_one_force.hpp), a
 // stage of rows at a time, their cells in L1 from the field to the share of the new Z. The
 // separate passes (the kick-drift pass, the sin/cos, Z,
@@ -36,14 +36,15 @@ struct RankOneFusedCells {
   std::size_t replicas;
 };
 
-/// Rows [r0, r1) of replicas [b0, b0 + k_fused_group): per cell, the force
-/// g = (cos Im y - sin Re y) / N at the last [cos, sin] and Z (or cells.g's), the kicks p += (c_i
-/// K_b) g, the drift theta += c.drift p, the [cos, sin] of the new theta; and z_out[2 b] (Re),
-/// z_out[2 b + 1] (Im) for those replicas = sum over the rows in order of a_n [cos, sin] from 0 (a
-/// block's share of Z: OrderedColumnSums). In `isa`, which this CPU must run (sincos_isa(), or one
+/// Rows [r0, r1) of the groups of replicas [b0, b1) (whole groups: b0 and b1 multiples of
+/// k_fused_group): per cell, the force g = (cos Im y - sin Re y) / N at the last [cos, sin] and Z
+/// (or cells.g's), the kicks p += (c_i K_b) g, the drift theta += c.drift p, the [cos, sin] of the
+/// new theta; and z_out[2 b] (Re), z_out[2 b + 1] (Im) for those replicas = sum over the rows in
+/// order of a_n [cos, sin] from 0 (a block's share of Z: OrderedColumnSums), the same bits for
+/// any split of the groups into calls. In `isa`, which this CPU must run (sincos_isa(), or one
 /// that sincos_isa_available() accepts).
-void rank_one_fused_group(SincosIsa isa, const RankOneFusedCells& cells,
-                          const KickDriftCoefficients& c, std::size_t r0, std::size_t r1,
-                          std::size_t b0, double* z_out);
+void rank_one_fused_groups(SincosIsa isa, const RankOneFusedCells& cells,
+                           const KickDriftCoefficients& c, std::size_t r0, std::size_t r1,
+                           std::size_t b0, std::size_t b1, double* z_out);
 
 }  // namespace hmfnet

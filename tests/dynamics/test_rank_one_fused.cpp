@@ -201,7 +201,7 @@ TEST_CASE("The rank-one fused pass takes angles beyond the reduced range from th
   }
 }
 
-TEST_CASE("The rank-one fused pass has the same bits in every instruction set",
+TEST_CASE("The rank-one fused pass has the same bits in every instruction set and grouping",
           "[rank_one_fused]") {
   const NodeIndex n = 53;
   const int count = 16;
@@ -224,7 +224,8 @@ TEST_CASE("The rank-one fused pass has the same bits in every instruction set",
       std::vector<double> g_formed(start.theta.size());
       for (std::size_t k = 0; k < g_formed.size(); ++k)
         g_formed[k] = std::sin(0.1 * static_cast<double>(k));
-      const auto run = [&](SincosIsa isa) {
+      // One call a group, or (whole) all the groups in one call, their stages side by side.
+      const auto run = [&](SincosIsa isa, bool whole = false) {
         Run out{start, cs, {}};
         std::vector<double> z_out(z.size());
         const RankOneFusedCells cells{structure.a.data(),
@@ -237,8 +238,10 @@ TEST_CASE("The rank-one fused pass has the same bits in every instruction set",
                                       out.state.theta.data(),
                                       K.data(),
                                       static_cast<std::size_t>(count)};
-        for (std::size_t b0 = 0; b0 < static_cast<std::size_t>(count); b0 += k_fused_group)
-          rank_one_fused_group(isa, cells, c, 0, static_cast<std::size_t>(n), b0, z_out.data());
+        const std::size_t step = whole ? static_cast<std::size_t>(count) : k_fused_group;
+        for (std::size_t b0 = 0; b0 < static_cast<std::size_t>(count); b0 += step)
+          rank_one_fused_groups(isa, cells, c, 0, static_cast<std::size_t>(n), b0, b0 + step,
+                                z_out.data());
         out.sums.order = z_out;
         return out;
       };
@@ -251,7 +254,16 @@ TEST_CASE("The rank-one fused pass has the same bits in every instruction set",
         CHECK(test::bit_difference(wide.state.p, baseline.state.p) == "");
         CHECK(test::bit_difference(wide.g, baseline.g) == "");  // the new [cos, sin]
         CHECK(test::bit_difference(wide.sums.order, baseline.sums.order) == "");  // the groups' Z
+        INFO("all the groups in one call");
+        const Run joined = run(isa, true);
+        CHECK(test::bit_difference(joined.state.theta, baseline.state.theta) == "");
+        CHECK(test::bit_difference(joined.state.p, baseline.state.p) == "");
+        CHECK(test::bit_difference(joined.g, baseline.g) == "");
+        CHECK(test::bit_difference(joined.sums.order, baseline.sums.order) == "");
       }
+      const Run joined = run(SincosIsa::baseline, true);
+      CHECK(test::bit_difference(joined.state.theta, baseline.state.theta) == "");
+      CHECK(test::bit_difference(joined.sums.order, baseline.sums.order) == "");
     }
   }
 }
