@@ -27,7 +27,11 @@ struct ForceSums {
 /// splitting's inner ones, the steps between records) skip them: the rank-one force then skips
 /// |y_n| (a square root a cell) and both ordered sums, the sparse force the ordered pass over its
 /// terms. g is the same either way, bit for bit (tests/dynamics/test_force_outputs.cpp).
-enum class ForceOutputs { force_and_sums, force_only };
+/// start_sums_and_force is for kick_drift_evaluate() only: the sums at the phases the pass
+/// starts from (the last evaluation's, which was force_only), formed as its kick forms the force
+/// there again, then the force alone at the new phases. A sampled step's sums then cost no pass
+/// of their own (Integrator::steps: each step's sums come with the next step's first pass).
+enum class ForceOutputs { force_and_sums, force_only, start_sums_and_force };
 
 class CouplingForce {
  public:
@@ -59,6 +63,12 @@ class CouplingForce {
                            ForceOutputs outputs) {
     compute_kick_drift(state, K, c, g, sums, outputs);
   }
+  /// g and the sums at the phases of the last evaluation, which was at `state` and force_only:
+  /// the bits of that evaluation with force_and_sums. By every thread of a team, or outside one.
+  /// This default evaluates again; a force that keeps what it needs forms them from that.
+  void form_sums(const RotorState& state, std::vector<double>& g, ForceSums& sums) {
+    compute_sums(state, g, sums);
+  }
   /// Stored entries of A this rank reads per evaluation (for throughput figures).
   virtual EdgeOffset work_per_evaluation() const = 0;
   /// Stored entries gathered per evaluation, for the default thread count (thread_choice.hpp):
@@ -88,6 +98,10 @@ class CouplingForce {
   /// evaluate(), by each force.
   virtual void compute(const RotorState& state, std::vector<double>& g, ForceSums& sums,
                        ForceOutputs outputs) = 0;
+  /// form_sums(), by each force.
+  virtual void compute_sums(const RotorState& state, std::vector<double>& g, ForceSums& sums) {
+    compute(state, g, sums, ForceOutputs::force_and_sums);
+  }
   /// kick_drift_evaluate(), by a force that fuses them.
   virtual void compute_kick_drift(RotorState& /*state*/, const std::vector<double>& /*K*/,
                                   const KickDriftCoefficients& /*c*/, std::vector<double>& /*g*/,

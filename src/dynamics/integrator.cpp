@@ -37,21 +37,45 @@ void kick_drift_pass(RotorState& state, const std::vector<double>& K, const std:
 // operations on every cell in the same order: the same bits as step after step), the last
 // step's closing kick at the end. after_step runs on the master after each step's last force
 // evaluation, when f.sums() is that step's. The sums are formed only where they are read: at a
-// step's last evaluation when after_step may read them, and at the last step's.
+// step's last evaluation when after_step may read them, and at the last step's. Where the force
+// fuses its passes, a sampled step's sums come with the next step's first pass, whose kick forms
+// the force at those phases again anyway (ForceOutputs::start_sums_and_force), and its
+// after_step runs after that pass: one pass over the cells a step instead of two (the rank-one
+// force's field pass; docs/performance.md "A sampled step's sums in the next pass"). The last
+// step's sums come from its closing evaluation, or, where that pass formed the step before's,
+// from form_sums after that step's after_step.
 void advance_splitting(RotorState& state, double h, const std::vector<double>& K,
                        ForceEvaluation& f, const std::vector<double>& kicks,
                        const std::vector<double>& drifts, std::int64_t steps,
                        const std::function<void()>& after_step) {
+  bool pending = false;  // the last step's sums and after_step wait for this step's first pass
   for (std::int64_t n = 0; n < steps; ++n) {
-    const bool read = after_step || n + 1 == steps;
+    const bool last = n + 1 == steps;
+    const bool read = after_step || last;
+    const bool defer = after_step && !last && f.force().fuses_kick_drift(state);
     for (std::size_t i = 0; i < drifts.size(); ++i) {
       KickDriftCoefficients c{{kicks[i] * h, 0.0}, 1, drifts[i] * h};
       if (i == 0 && n > 0) c = {{kicks.back() * h, kicks[0] * h}, 2, drifts[0] * h};
-      f.kick_drift_update(
-          state, K, c,
-          read && i + 1 == drifts.size() ? ForceOutputs::force_and_sums : ForceOutputs::force_only);
+      const bool closing_sums = read && !defer && i + 1 == drifts.size();
+      const bool start_sums = pending && i == 0;
+      ForceOutputs outputs = ForceOutputs::force_only;
+      if (start_sums) {
+        outputs = ForceOutputs::start_sums_and_force;
+      } else if (closing_sums) {
+        outputs = ForceOutputs::force_and_sums;
+      }
+      f.kick_drift_update(state, K, c, outputs);
+      if (!start_sums) continue;
+      master_only(after_step);
+      pending = false;
+      // The sums of this pass's phases too: after the record above read the start's.
+      if (closing_sums) f.form_sums(state);
     }
-    if (after_step) master_only(after_step);
+    if (defer) {
+      pending = true;
+    } else if (after_step) {
+      master_only(after_step);
+    }
   }
   if (steps > 0) kick_drift_pass(state, K, f.g(), {{kicks.back() * h, 0.0}, 1, 0.0}, false);
 }
@@ -71,8 +95,10 @@ const std::vector<double>& leapfrog_drifts() {
 void ForceEvaluation::kick_drift_update(RotorState& state, const std::vector<double>& K,
                                         const KickDriftCoefficients& c, ForceOutputs outputs) {
   if (!m_force->fuses_kick_drift(state)) {
+    // The start's sums before the kick moves the phases (an evaluation there again).
+    if (outputs == ForceOutputs::start_sums_and_force) m_force->form_sums(state, m_g, m_sums);
     kick_drift_pass(state, K, m_g, c, true);
-    update(state, outputs);
+    update(state, outputs == ForceOutputs::force_and_sums ? outputs : ForceOutputs::force_only);
     return;
   }
   if (outside_team()) prepare(state);

@@ -45,8 +45,16 @@ class ForceEvaluation {
   /// phases), one pass that forms g() again from the force's own data, the same bits. After a
   /// fused force_only call g() is not the new force: the next call forms it again, and a
   /// force_and_sums call forms it (a splitting's last step always does).
+  /// With start_sums_and_force, sums() are then those at the phases the pass started from.
   void kick_drift_update(RotorState& state, const std::vector<double>& K,
                          const KickDriftCoefficients& c, ForceOutputs outputs);
+  /// g() and sums() at `state`'s phases, where the last update was there and force_only (the
+  /// bits of that update with force_and_sums; CouplingForce::form_sums). Every thread of a team.
+  void form_sums(const RotorState& state) {
+    m_force->form_sums(state, m_g, m_sums);
+#pragma omp master
+    m_sums_current = true;
+  }
   const std::vector<double>& g() const { return m_g; }
   /// The sums of the last update; valid where sums_current() (an integrator forms them at a
   /// step's last evaluation when after_step reads them, and at the last step's always).

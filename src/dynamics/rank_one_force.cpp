@@ -75,7 +75,10 @@ RankOneForce::RankOneForce(RankOneStructure structure, NodeIndex first_row, Node
     : m_structure(std::move(structure)),
       m_first_row(first_row),
       m_rows(rows),
-      m_inverse_n(1.0 / static_cast<double>(m_structure.a.size())) {}
+      m_inverse_n(1.0 / static_cast<double>(m_structure.a.size())),
+      m_unit_a(std::all_of(m_structure.a.begin() + first_row,
+                           m_structure.a.begin() + first_row + rows,
+                           [](double a) { return a == 1.0; })) {}
 
 void RankOneForce::prepare(const RotorState& state, std::vector<double>& g, ForceSums& sums) {
   const auto cells =
@@ -476,13 +479,25 @@ void RankOneForce::field_pass(const RotorState& state, std::vector<double>& g, F
   // The loop's barrier above makes every block's sums visible to the master.
   if constexpr (!Sums) return;
 #pragma omp master
-  {
-    m_sums.add_blocks(m_term_sums.data());
-    for (std::size_t b = 0; b < w; ++b) {
-      sums.order[b] = m_term_sums[2 * b];
-      sums.coupling[b] = m_term_sums[2 * b + 1];
-    }
+  collect_sums(w, sums);
+}
+
+void RankOneForce::collect_sums(std::size_t w, ForceSums& sums) {
+  m_sums.add_blocks(m_term_sums.data());
+  for (std::size_t b = 0; b < w; ++b) {
+    sums.order[b] = m_term_sums[2 * b];
+    sums.coupling[b] = m_term_sums[2 * b + 1];
   }
+}
+
+void RankOneForce::compute_sums(const RotorState& state, std::vector<double>& g, ForceSums& sums) {
+  // [cos, sin] and Z of the last evaluation are `state`'s (also after a force_only one); else
+  // evaluate again.
+  if (state.theta.data() != m_evaluated_theta) {
+    compute(state, g, sums, ForceOutputs::force_and_sums);
+    return;
+  }
+  field_pass<true>(state, g, sums);
 }
 
 bool RankOneForce::fuses_kick_drift(const RotorState& state) const {
@@ -522,16 +537,18 @@ void RankOneForce::compute_kick_drift(RotorState& state, const std::vector<doubl
   // Every item reads the last evaluation's Z and its own cells' [cos, sin] before it overwrites
   // them, and the master writes the new Z only after the loop's barrier.
   // The last evaluation's g where it formed it into this g (a sampled step's field pass).
+  const bool start_sums = outputs == ForceOutputs::start_sums_and_force;
   const RankOneFusedCells fused{a,
                                 m_cs.data(),
                                 m_z.data(),
-                                m_formed_g == g.data() ? g.data() : nullptr,
+                                m_formed_g == g.data() && !start_sums ? g.data() : nullptr,
                                 m_inverse_n,
                                 m_structure.diagonal,
                                 state.p.data(),
                                 state.theta.data(),
                                 K.data(),
-                                w};
+                                w,
+                                m_unit_a};
   // Each thread's items as a static schedule shares them (one contiguous range, the same work a
   // thread as before), and the items of one block in that range in one call: its groups then
   // take each stage of rows side by side (rank_one_fused.cpp: fused_rows).
@@ -542,10 +559,17 @@ void RankOneForce::compute_kick_drift(RotorState& state, const std::vector<doubl
     while (next < mine.end && next / groups(w) == it.block) ++next;
     const std::size_t b1 = it.b0 + (next - i) * k_group;
     rank_one_fused_groups(sincos_isa(), fused, c, it.r0, it.r1, it.b0, b1,
-                          m_z_sums.partial(it.block));
+                          m_z_sums.partial(it.block),
+                          start_sums ? m_sums.partial(it.block) : nullptr);
     i = next;
   }
 #pragma omp barrier
+  // The sums at the start phases, before reduce_z's barrier (after which the next pass may
+  // write the blocks' partials again).
+  if (start_sums) {
+#pragma omp master
+    collect_sums(w, sums);
+  }
   reduce_z(state, outputs == ForceOutputs::force_and_sums ? g.data() : nullptr);
   // g at the new phases only where the sums are formed: a force_only call leaves the last
   // evaluation's g (coupling_force.hpp), which the next fused call forms again from its own data.

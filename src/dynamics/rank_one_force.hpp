@@ -11,7 +11,8 @@
 // test_rank_one_force.cpp). Inside a splitting's steps, whole groups of 8 replicas take the
 // kick, the drift, the sin/cos and Z in one pass instead, where the groups share out over the
 // threads (kick_drift_evaluate, fuses_kick_drift; rank_one_fused.hpp), the field pass following
-// only where the sums are read.
+// only where the sums are read and no later pass forms them (ForceOutputs::start_sums_and_force:
+// a sampled step's sums come with the next step's kick).
 #include <optional>
 #include <vector>
 
@@ -65,6 +66,11 @@ class RankOneForce : public CouplingForce {
   void compute_kick_drift(RotorState& state, const std::vector<double>& K,
                           const KickDriftCoefficients& c, std::vector<double>& g, ForceSums& sums,
                           ForceOutputs outputs) override;
+  /// g and the sums at the last evaluation's phases: the field pass alone where they are
+  /// `state`'s (a fused force_only pass), else an evaluation.
+  void compute_sums(const RotorState& state, std::vector<double>& g, ForceSums& sums) override;
+  /// The blocks' sums (m_sums) added in order into `sums`, w replicas. Master thread.
+  void collect_sums(std::size_t w, ForceSums& sums);
   /// The sin/cos, Z and field passes, with (Sums) the order and coupling sums.
   template <bool Sums>
   void evaluate_passes(const RotorState& state, std::vector<double>& g, ForceSums& sums);
@@ -78,6 +84,7 @@ class RankOneForce : public CouplingForce {
   NodeIndex m_first_row;
   NodeIndex m_rows;
   double m_inverse_n;
+  bool m_unit_a;  // every a_n of this rank's rows is 1 (rank_one_fused.hpp: RankOneFusedCells)
   std::vector<double> m_cs;                   // rows x replicas x [cos, sin]: once per evaluation
   std::vector<double> m_z;                    // replicas x [Re Z, Im Z]
   const double* m_evaluated_theta = nullptr;  // the phases m_cs and m_z belong to

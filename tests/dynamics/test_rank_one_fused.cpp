@@ -34,7 +34,7 @@ RotorState replicas(NodeIndex rows, int count, NodeIndex first_row = 0) {
 }
 
 // a_n = 0.5 .. 1.1: a weighted rank-one network (the disordered HMF), so that a_n and a_n^2
-// multiply something other than 1.
+// multiply something other than 1 (the pass leaves the products out where every a_n is 1).
 RankOneStructure weighted(NodeIndex n, bool diagonal) {
   std::vector<double> a(static_cast<std::size_t>(n));
   for (std::size_t i = 0; i < a.size(); ++i) a[i] = 0.5 + 0.1 * static_cast<double>(i % 7);
@@ -136,23 +136,28 @@ void check_fused(const RankOneStructure& structure, Rows rows, int count, int th
 }
 
 // `name`'s 17 steps on the rank-one force, fused where it fuses (`fuses`, asked inside the team),
-// against the same force behind SeparatePasses.
+// against the same force behind SeparatePasses; with `record`, every step's order and coupling
+// sums as after_step reads them (fused, each formed by the next step's first pass).
 void check_steps(const std::string& name, NodeIndex n, int count, int threads, bool record,
-                 bool fuses) {
+                 bool fuses, bool ones = false) {
   const ThreadCountScope scope(threads);
   const auto method = make_integrator(name);
   const std::vector<double> K = couplings(count);
-  RankOneForce fusing(weighted(n, false), 0, n), inner(weighted(n, false), 0, n);
+  const RankOneStructure structure =
+      ones ? RankOneStructure{std::vector<double>(static_cast<std::size_t>(n), 1.0), false}
+           : weighted(n, false);
+  RankOneForce fusing(structure, 0, n), inner(structure, 0, n);
   SeparatePasses plain(inner);
   RotorState a = replicas(n, count), b = a;
   ForceEvaluation fa(fusing), fb(plain);
   fa.update(a);
   fb.update(b);
   CHECK(fuses_in_team(fusing, a) == fuses);
-  std::vector<double> order_a, order_b;
+  std::vector<double> order_a, order_b;  // and the coupling sums
   const auto after = [&](ForceEvaluation& f, std::vector<double>& order) {
     return record ? std::function<void()>([&] {
       order.insert(order.end(), f.sums().order.begin(), f.sums().order.end());
+      order.insert(order.end(), f.sums().coupling.begin(), f.sums().coupling.end());
     })
                   : std::function<void()>();
   };
@@ -183,6 +188,15 @@ TEST_CASE("The rank-one fused pass has the bits of the kick-drift pass and an ev
       }
     }
   }
+  SECTION("a = 1 (the complete graph), whose products by a_n the pass leaves out") {
+    for (const bool diagonal : {true, false}) {
+      for (const int threads : {1, 2}) {
+        INFO((diagonal ? "with" : "without") << " the diagonal, " << threads << " threads");
+        check_fused({std::vector<double>(static_cast<std::size_t>(n), 1.0), diagonal}, {0, n}, 16,
+                    threads, 1.0);
+      }
+    }
+  }
   SECTION("a rank's rows: a offset by its first row") {
     check_fused(weighted(7000, false), {700, 6200}, 16, 1, 1.0);
     check_fused(weighted(7000, true), {700, 6200}, 8, 2, 1.0);
@@ -206,64 +220,72 @@ TEST_CASE("The rank-one fused pass has the same bits in every instruction set an
   const NodeIndex n = 53;
   const int count = 16;
   const std::vector<double> K = couplings(count);
-  for (const bool diagonal : {true, false}) {
-    for (const int kicks : {1, 2}) {
-      INFO((diagonal ? "with" : "without") << " the diagonal, " << kicks << " kicks");
-      const RankOneStructure structure = weighted(n, diagonal);
-      RotorState start = replicas(n, count);
-      start.theta[37] = 3e8;  // beyond the reduced range: the C library's [cos, sin]
-      std::vector<double> cs(2 * start.theta.size()), z(2 * static_cast<std::size_t>(count));
-      for (std::size_t k = 0; k < start.theta.size(); ++k) {
-        cs[2 * k] = std::cos(start.theta[k]);
-        cs[2 * k + 1] = std::sin(start.theta[k]);
-      }
-      for (std::size_t b = 0; b < z.size(); ++b) z[b] = 10.0 + static_cast<double>(b);
-      const KickDriftCoefficients c{{0.05, 0.07}, kicks, 0.1};
-      // A stored g (ReadG) in place of the field where kicks == 2: the same in every set too.
-      const bool read_g = kicks == 2;
-      std::vector<double> g_formed(start.theta.size());
-      for (std::size_t k = 0; k < g_formed.size(); ++k)
-        g_formed[k] = std::sin(0.1 * static_cast<double>(k));
-      // One call a group, or (whole) all the groups in one call, their stages side by side.
-      const auto run = [&](SincosIsa isa, bool whole = false) {
-        Run out{start, cs, {}};
-        std::vector<double> z_out(z.size());
-        const RankOneFusedCells cells{structure.a.data(),
-                                      out.g.data(),
-                                      z.data(),
-                                      read_g ? g_formed.data() : nullptr,
-                                      1.0 / n,
-                                      diagonal,
-                                      out.state.p.data(),
-                                      out.state.theta.data(),
-                                      K.data(),
-                                      static_cast<std::size_t>(count)};
-        const std::size_t step = whole ? static_cast<std::size_t>(count) : k_fused_group;
-        for (std::size_t b0 = 0; b0 < static_cast<std::size_t>(count); b0 += step)
-          rank_one_fused_groups(isa, cells, c, 0, static_cast<std::size_t>(n), b0, b0 + step,
-                                z_out.data());
-        out.sums.order = z_out;
-        return out;
-      };
-      const Run baseline = run(SincosIsa::baseline);
-      for (const SincosIsa isa : {SincosIsa::avx2, SincosIsa::avx512}) {
-        if (!sincos_isa_available(isa)) continue;
-        INFO(sincos_isa_name(isa));
-        const Run wide = run(isa);
-        CHECK(test::bit_difference(wide.state.theta, baseline.state.theta) == "");
-        CHECK(test::bit_difference(wide.state.p, baseline.state.p) == "");
-        CHECK(test::bit_difference(wide.g, baseline.g) == "");  // the new [cos, sin]
-        CHECK(test::bit_difference(wide.sums.order, baseline.sums.order) == "");  // the groups' Z
-        INFO("all the groups in one call");
-        const Run joined = run(isa, true);
+  for (const bool ones : {false, true}) {
+    for (const bool diagonal : {true, false}) {
+      for (const int kicks : {1, 2}) {
+        INFO((diagonal ? "with" : "without")
+             << " the diagonal, " << kicks << " kicks, " << (ones ? "a = 1" : "weighted"));
+        const RankOneStructure structure =
+            ones ? RankOneStructure{std::vector<double>(static_cast<std::size_t>(n), 1.0), diagonal}
+                 : weighted(n, diagonal);
+        RotorState start = replicas(n, count);
+        start.theta[37] = 3e8;  // beyond the reduced range: the C library's [cos, sin]
+        std::vector<double> cs(2 * start.theta.size()), z(2 * static_cast<std::size_t>(count));
+        for (std::size_t k = 0; k < start.theta.size(); ++k) {
+          cs[2 * k] = std::cos(start.theta[k]);
+          cs[2 * k + 1] = std::sin(start.theta[k]);
+        }
+        for (std::size_t b = 0; b < z.size(); ++b) z[b] = 10.0 + static_cast<double>(b);
+        const KickDriftCoefficients c{{0.05, 0.07}, kicks, 0.1};
+        // A stored g (ReadG) in place of the field where kicks == 2: the same in every set too.
+        const bool read_g = kicks == 2;
+        std::vector<double> g_formed(start.theta.size());
+        for (std::size_t k = 0; k < g_formed.size(); ++k)
+          g_formed[k] = std::sin(0.1 * static_cast<double>(k));
+        // One call a group, or (whole) all the groups in one call, their stages side by side;
+        // with a = 1, the products by a_n left out (unit_a) everywhere but in the baseline run.
+        const auto run = [&](SincosIsa isa, bool whole = false, bool plain = false) {
+          const bool unit_a = ones && !plain;
+          Run out{start, cs, {}};
+          std::vector<double> z_out(z.size());
+          const RankOneFusedCells cells{structure.a.data(),
+                                        out.g.data(),
+                                        z.data(),
+                                        read_g ? g_formed.data() : nullptr,
+                                        1.0 / n,
+                                        diagonal,
+                                        out.state.p.data(),
+                                        out.state.theta.data(),
+                                        K.data(),
+                                        static_cast<std::size_t>(count),
+                                        unit_a};
+          const std::size_t step = whole ? static_cast<std::size_t>(count) : k_fused_group;
+          for (std::size_t b0 = 0; b0 < static_cast<std::size_t>(count); b0 += step)
+            rank_one_fused_groups(isa, cells, c, 0, static_cast<std::size_t>(n), b0, b0 + step,
+                                  z_out.data());
+          out.sums.order = z_out;
+          return out;
+        };
+        const Run baseline = run(SincosIsa::baseline, false, true);
+        for (const SincosIsa isa : {SincosIsa::avx2, SincosIsa::avx512}) {
+          if (!sincos_isa_available(isa)) continue;
+          INFO(sincos_isa_name(isa));
+          const Run wide = run(isa);
+          CHECK(test::bit_difference(wide.state.theta, baseline.state.theta) == "");
+          CHECK(test::bit_difference(wide.state.p, baseline.state.p) == "");
+          CHECK(test::bit_difference(wide.g, baseline.g) == "");  // the new [cos, sin]
+          CHECK(test::bit_difference(wide.sums.order, baseline.sums.order) == "");  // the groups' Z
+          INFO("all the groups in one call");
+          const Run joined = run(isa, true);
+          CHECK(test::bit_difference(joined.state.theta, baseline.state.theta) == "");
+          CHECK(test::bit_difference(joined.state.p, baseline.state.p) == "");
+          CHECK(test::bit_difference(joined.g, baseline.g) == "");
+          CHECK(test::bit_difference(joined.sums.order, baseline.sums.order) == "");
+        }
+        const Run joined = run(SincosIsa::baseline, true);
         CHECK(test::bit_difference(joined.state.theta, baseline.state.theta) == "");
-        CHECK(test::bit_difference(joined.state.p, baseline.state.p) == "");
-        CHECK(test::bit_difference(joined.g, baseline.g) == "");
         CHECK(test::bit_difference(joined.sums.order, baseline.sums.order) == "");
       }
-      const Run joined = run(SincosIsa::baseline, true);
-      CHECK(test::bit_difference(joined.state.theta, baseline.state.theta) == "");
-      CHECK(test::bit_difference(joined.sums.order, baseline.sums.order) == "");
     }
   }
 }
@@ -280,6 +302,8 @@ TEST_CASE("The splittings' steps on the rank-one force: fused, the bits of the s
       // Two threads: 4500 rows are three blocks, 6 items of 8 replicas, 3 a thread.
       INFO(name << ", 16 replicas, 2 threads, " << (record ? "" : "no ") << "record a step");
       check_steps(name, 4500, 16, 2, record, true);
+      INFO("a = 1 (the complete graph)");
+      check_steps(name, 700, 16, 1, record, true, true);
     }
   }
 }
