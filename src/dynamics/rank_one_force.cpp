@@ -536,12 +536,13 @@ void RankOneForce::compute_kick_drift(RotorState& state, const std::vector<doubl
   }
   // Every item reads the last evaluation's Z and its own cells' [cos, sin] before it overwrites
   // them, and the master writes the new Z only after the loop's barrier.
-  // The last evaluation's g where it formed it into this g (a sampled step's field pass).
+  // The last evaluation's g where it formed it into this g (a sampled step's field pass); with
+  // the start's sums the pass forms the field instead (rank_one_fused_groups).
   const bool start_sums = outputs == ForceOutputs::start_sums_and_force;
   const RankOneFusedCells fused{a,
                                 m_cs.data(),
                                 m_z.data(),
-                                m_formed_g == g.data() && !start_sums ? g.data() : nullptr,
+                                m_formed_g == g.data() ? g.data() : nullptr,
                                 m_inverse_n,
                                 m_structure.diagonal,
                                 state.p.data(),

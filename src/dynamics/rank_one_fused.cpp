@@ -65,7 +65,8 @@ constexpr std::size_t k_rows_a_stage = 8;
 // multiplications fewer a vector.
 // With StartSums (and not ReadG), also the group's running share of the sums at the phases the
 // pass starts from at sums_out (replicas x [sum |y_n|, sum Re(e^{-i theta_n} y_n)]), the rows
-// in order, as field_one and field_block_avx512 form them (rank_one_force.cpp).
+// in order, as field_one and field_block_avx512 form them (rank_one_force.cpp; per lane
+// kernel_arithmetic.hpp's order_term and coupling_term).
 template <typename Lanes, std::size_t Kicks, bool ReadG, bool UnitA, bool StartSums>
 HMFNET_INLINE void kick_drift_stage(const RankOneFusedCells& f, const KickDriftCoefficients& c,
                                     std::size_t q0, std::size_t q1, std::size_t b0,
