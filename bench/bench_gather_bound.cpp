@@ -5,14 +5,14 @@
 // the ceiling of LeapFrogStep on the same table:
 //  - GatherBound/N/degree/replicas/threads/precision: the ER network's own column stream over a
 //    table of N records (the kernel's table, the same size and record width, in the same cache
-//    level);
+//    level and the same pages: core/cache_aligned.hpp, huge pages from 4 MiB);
 //  - SincosFloor/N/degree/replicas/threads: the other per-step work the kernel cannot skip, one
 //    sincos per rotor and replica (the kernel's own vectorised one), counted per stored entry x
 //    replica so that 1 / (1 / gather + 1 / sincos) is the kernel's floor; SincosLibc: the same
 //    with glibc's scalar sincos, which the kernel used before;
 //  - GatherLadder/table_kib/threads: uniform random indices over a table of 16-byte records
 //    sized for L1, L2, L3 and memory (this machine: 32 KiB L1d and 512 KiB L2 per core, 32 MiB
-//    L3 shared), the latency-bandwidth ladder the kernel's tables sit on.
+//    L3 shared), the latency-bandwidth ladder the kernel's tables sit on (in the kernel's pages).
 // Rates count stored entries x replicas per second, as LeapFrogStep's do.
 #include <benchmark/benchmark.h>
 #include <omp.h>
@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "cached_network.hpp"
+#include "core/cache_aligned.hpp"
 #include "dynamics/sincos.hpp"
 
 using namespace hmfnet;
@@ -64,7 +65,7 @@ T gather_rows(const EdgeOffset* row_ptr, const NodeIndex* cols, NodeIndex rows, 
 
 template <typename T, std::size_t W>
 void run_bound(benchmark::State& state, const Network& net) {
-  const std::vector<T> table(static_cast<std::size_t>(net.size()) * W, T(0.5));
+  const CacheAlignedVector<T> table(static_cast<std::size_t>(net.size()) * W, T(0.5));
   for (auto _ : state) {
     benchmark::DoNotOptimize(
         gather_rows<T, W>(net.row_ptr().data(), net.cols().data(), net.size(), table.data()));
@@ -143,7 +144,7 @@ void GatherLadder(benchmark::State& state) {
   std::mt19937_64 rng(7);
   std::uniform_int_distribution<NodeIndex> pick(0, static_cast<NodeIndex>(records) - 1);
   for (auto& c : cols) c = pick(rng);
-  const std::vector<double> table(2 * records, 0.5);
+  const CacheAlignedVector<double> table(2 * records, 0.5);
   for (auto _ : state) {
     benchmark::DoNotOptimize(
         gather_rows<double, 2>(row_ptr.data(), cols.data(), rows, table.data()));

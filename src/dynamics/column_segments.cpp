@@ -11,6 +11,7 @@
 #include <string>
 
 #include "core/cache_aligned.hpp"
+#include "core/huge_pages.hpp"
 #include "dynamics/segment_runs.hpp"
 
 namespace hmfnet {
@@ -51,20 +52,6 @@ class PageRelease {
   static std::uintptr_t round_up(std::uintptr_t a) { return (a + page() - 1) / page() * page(); }
   std::uintptr_t m_done;
 };
-
-// Asks for transparent huge pages over an array's whole 2 MiB blocks (MADV_HUGEPAGE; Debian
-// leaves them to madvise). The copy of the indices, its pages faulted in as the copy goes (16
-// regions at once, interleaved with pages the network's indices gave back), ran 0.93-1.00x the
-// zero-filled one through simulate at ER N = 10^6, degree 100; in huge pages 0.96-1.07x
-// (docs/performance.md, "The segments in place of the network's indices").
-void prefer_huge_pages(void* data, std::size_t bytes) {
-  constexpr std::uintptr_t huge = std::uintptr_t{2} << 20;
-  const auto begin = (reinterpret_cast<std::uintptr_t>(data) + huge - 1) / huge * huge;
-  const auto end = (reinterpret_cast<std::uintptr_t>(data) + bytes) / huge * huge;
-  if (end <= begin) return;
-  // NOLINTNEXTLINE(performance-no-int-to-ptr): the pages of an array this process owns
-  madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
-}
 
 }  // namespace
 
@@ -211,6 +198,10 @@ ColumnSegments::ColumnSegments(const std::vector<EdgeOffset>& row_ptr,
   m_indices = cols.size() + k_run_padding;
   // Not value-initialised (make_unique would write every page now); the zeros past the end,
   // local index 0 of the last segment, are a readable record.
+  // In huge pages: the copy, its pages faulted in as the copy goes (16 regions at once,
+  // interleaved with pages the network's indices gave back), ran 0.93-1.00x the zero-filled one
+  // through simulate at ER N = 10^6, degree 100; in huge pages 0.96-1.07x (docs/performance.md,
+  // "The segments in place of the network's indices").
   if (m_narrow) {
     m_cols16.reset(new std::uint16_t[m_indices]);  // NOLINT(cppcoreguidelines-owning-memory)
     prefer_huge_pages(m_cols16.get(), m_indices * sizeof(std::uint16_t));
