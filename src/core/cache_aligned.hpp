@@ -6,7 +6,7 @@
 // as the step's bound counts them (bench/bench_access_lines.cpp). Measured on the Intel Xeon
 // (docs/performance.md, "Cache lines in the bound"): the step's speed unchanged within the
 // noise; the carried partial sums, aligned too, ran 3-8% slower at N = 10^6 and stay unaligned.
-// Tables of k_huge_table_bytes and more (N = 10^5 with 16 replicas, N = 10^6 with one) also start
+// Tables of k_huge_table_bytes and more (from 262,144 nodes with one float64 replica) also start
 // on a huge page, in huge pages (huge_pages.hpp): measured on the AMD EPYC family 25 model 17
 // (docs/performance.md, "The gathered table in huge pages"). Smaller ones stay in 4 KiB pages:
 // a table of N = 10^4 in one huge page ran 0.80-1.02x there.
