@@ -1,7 +1,6 @@
 #include "dynamics/column_segments.hpp"
 
 #include <omp.h>
-#include <sys/mman.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -12,6 +11,7 @@
 
 #include "core/cache_aligned.hpp"
 #include "core/huge_pages.hpp"
+#include "core/page_release.hpp"
 #include "dynamics/segment_runs.hpp"
 
 namespace hmfnet {
@@ -27,31 +27,6 @@ bool carry_pays(double segments, double degree, std::size_t record_bytes) {
   const double gathered = degree * std::max(record, static_cast<double>(k_cache_line_bytes));
   return carried < gathered;
 }
-
-// Gives the pages of an array back to the system as a pass moves through it, from `begin` on:
-// up_to(p) releases the whole pages between the last release and p (madvise MADV_DONTNEED: the
-// array must not be read there again). Whole pages only, so nothing outside [begin, p) is lost.
-class PageRelease {
- public:
-  explicit PageRelease(const void* begin) : m_done(round_up(address(begin))) {}
-  void up_to(const void* end) {
-    const std::uintptr_t to = address(end) / page() * page();
-    if (to < m_done + k_step) return;  // in steps of 1 MiB: ~2,600 rows of degree 100
-    // NOLINTNEXTLINE(performance-no-int-to-ptr): the pages of an array this process owns
-    madvise(reinterpret_cast<void*>(m_done), to - m_done, MADV_DONTNEED);
-    m_done = to;
-  }
-
- private:
-  static constexpr std::uintptr_t k_step = std::uintptr_t{1} << 20;
-  static std::uintptr_t page() {
-    static const auto bytes = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
-    return bytes;
-  }
-  static std::uintptr_t address(const void* p) { return reinterpret_cast<std::uintptr_t>(p); }
-  static std::uintptr_t round_up(std::uintptr_t a) { return (a + page() - 1) / page() * page(); }
-  std::uintptr_t m_done;
-};
 
 }  // namespace
 

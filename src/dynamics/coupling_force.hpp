@@ -25,8 +25,9 @@ struct ForceSums {
 /// What an evaluation forms besides g. The sums are read only where a record is taken (at the
 /// end of a segment of steps, or after each step of a sampled one), so the other evaluations (a
 /// splitting's inner ones, the steps between records) skip them: the rank-one force then skips
-/// |y_n| (a square root a cell) and both ordered sums, the sparse force the ordered pass over its
-/// terms. g is the same either way, bit for bit (tests/dynamics/test_force_outputs.cpp).
+/// |y_n| (a square root a cell) and both ordered sums, the sparse force its rows' terms (a square
+/// root a row and replica) and the ordered pass over them. g and the local fields y_n are the same
+/// either way, bit for bit (tests/dynamics/test_force_outputs.cpp).
 /// start_sums_and_force is for kick_drift_evaluate() only: the sums at the phases the pass
 /// starts from (the last evaluation's, which was force_only), formed as its kick forms the force
 /// there again, then the force alone at the new phases. A sampled step's sums then cost no pass

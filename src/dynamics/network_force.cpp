@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <type_traits>
 
 #include "core/cpu_caches.hpp"
 #include "core/error.hpp"
@@ -34,8 +35,8 @@ namespace {
 // accumulators (C x 2B values of T) fit in the 16 vector registers of x86-64 instead of spilling
 // to the stack at every neighbour. Replicas then add 2B independent chains per neighbour, and one
 // gathered neighbour brings all their [cos, sin] in 2B adjacent values (one or two cache lines).
-template <typename T, int B, std::size_t C, bool Weighted>
-void rows_kernel(const RowKernelArgs<T>& a, NodeIndex rows, int runtime_b) {
+template <typename T, int B, std::size_t C, bool Weighted, typename I>
+void rows_kernel(const RowKernelArgs<T, I>& a, NodeIndex rows, int runtime_b) {
   static_assert(C == 1 || C == 2 || C == 4, "the partials per pass divide 4");
   const int nb = B > 0 ? B : runtime_b;
   constexpr int k_max = 64;
@@ -83,8 +84,8 @@ constexpr std::size_t partials_per_pass() {
 // One replica: four independent [cos, sin] accumulators per row break the floating-point add
 // dependency chain (one add latency per neighbour otherwise). The order of the additions is
 // fixed by the CSR row, so results remain identical for any thread or rank count.
-template <typename T, bool Weighted>
-void rows_kernel_single(const RowKernelArgs<T>& a, NodeIndex rows) {
+template <typename T, bool Weighted, typename I>
+void rows_kernel_single(const RowKernelArgs<T, I>& a, NodeIndex rows) {
 #pragma omp for schedule(static)
   for (NodeIndex r = 0; r < rows; ++r) {
     T c0 = 0, s0 = 0, c1 = 0, s1 = 0, c2 = 0, s2 = 0, c3 = 0, s3 = 0;
@@ -114,6 +115,7 @@ void rows_kernel_single(const RowKernelArgs<T>& a, NodeIndex rows) {
     a.g[r] = a.inverse_n * (c * ys - s * yc);
     a.y[2 * r] = yc;
     a.y[2 * r + 1] = ys;
+    if (a.terms == nullptr) continue;
     a.terms[2 * r] = std::sqrt(yc * yc + ys * ys);
     a.terms[2 * r + 1] = c * yc + s * ys;
   }
@@ -216,8 +218,8 @@ void dispatch_segmented_index(const RowKernelArgs<T>& a, const SegmentArgs<T>& s
   }
 }
 
-template <typename T, bool Weighted>
-void dispatch(const RowKernelArgs<T>& a, NodeIndex rows, int b) {
+template <typename T, bool Weighted, typename I>
+void dispatch(const RowKernelArgs<T, I>& a, NodeIndex rows, int b) {
   switch (b) {
     case 1:
       rows_kernel_single<T, Weighted>(a, rows);
@@ -237,8 +239,8 @@ void dispatch(const RowKernelArgs<T>& a, NodeIndex rows, int b) {
   }
 }
 
-template <typename T>
-void run_kernel(const RowKernelArgs<T>& a, NodeIndex rows, int b) {
+template <typename T, typename I>
+void run_kernel(const RowKernelArgs<T, I>& a, NodeIndex rows, int b) {
   const SincosIsa isa = sincos_isa();
   if (wide_loops_serve<T>(b, isa)) {
     wide_rows(a, rows, b, isa);
@@ -274,14 +276,15 @@ void narrow(const double* from, std::size_t n, float* to) {
 }  // namespace
 
 NetworkForce::NetworkForce(const DistributedNetwork& network, ForcePrecision precision,
-                           NodeIndex segment_width)
+                           NodeIndex segment_width, bool allow_narrow)
     : m_network(network),
       m_adjacency(network.local_adjacency()),
       m_nnz(static_cast<EdgeOffset>(m_adjacency.cols.size())),
       m_inverse_n(1.0 / static_cast<double>(network.global_size())),
       m_identity_import(network.columns_are_owned_rows()),
       m_precision(precision),
-      m_segment_request(segment_width) {
+      m_segment_request(segment_width),
+      m_allow_narrow(allow_narrow) {
   if (m_precision == ForcePrecision::float32) {
     m_weights_f32.resize(m_adjacency.weights.size());
 #pragma omp parallel
@@ -291,18 +294,26 @@ NetworkForce::NetworkForce(const DistributedNetwork& network, ForcePrecision pre
 
 template <typename T>
 void NetworkForce::run_rows(const T* weights, const T* column_cs, NodeIndex rows, int replicas,
-                            std::vector<double>& g) {
-  const RowKernelArgs<T> args{m_adjacency.row_ptr.data(),
-                              csr_cols().data(),
-                              weights,
-                              column_cs,
-                              m_owned_cs.data(),
-                              m_inverse_n,
-                              g.data(),
-                              m_y.data(),
-                              m_terms.data()};
+                            std::vector<double>& g, ForceOutputs outputs) {
+  const auto args_with = [&](const auto* cols) {
+    using I = std::remove_const_t<std::remove_pointer_t<decltype(cols)>>;
+    return RowKernelArgs<T, I>{m_adjacency.row_ptr.data(),
+                               cols,
+                               weights,
+                               column_cs,
+                               m_owned_cs.data(),
+                               m_inverse_n,
+                               g.data(),
+                               m_y.data(),
+                               outputs == ForceOutputs::force_only ? nullptr : m_terms.data()};
+  };
+  const RowKernelArgs<T> args = args_with(csr_cols().data());
   if (m_segments.count() == 1) {
-    run_kernel(args, rows, replicas);
+    if (m_narrow_cols.empty()) {
+      run_kernel(args, rows, replicas);
+    } else {
+      run_kernel(args_with(m_narrow_cols.data()), rows, replicas);
+    }
     return;
   }
   T* carry = nullptr;
@@ -335,20 +346,35 @@ void NetworkForce::take_columns(DistributedNetwork& network) {
 
 void NetworkForce::cut(NodeIndex width) {
   const bool segmented = width < m_adjacency.columns;
-  if (m_column_owner != nullptr && !m_took_columns && segmented) {
+  const bool narrow = !segmented && m_allow_narrow && NarrowColumns::fits(m_adjacency.columns);
+  if (m_column_owner != nullptr && !m_took_columns && (segmented || narrow)) {
     m_own_cols = m_column_owner->release_columns();
     m_took_columns = true;
   }
+  // Taken, the indices are in the segments, in the 16-bit copy or in m_own_cols: back in
+  // m_own_cols first, each copy freed before the next is made.
+  if (!m_narrow_cols.empty()) {
+    if (m_took_columns) m_own_cols = m_narrow_cols.widened();
+    m_narrow_cols = NarrowColumns();
+  }
   if (!m_took_columns) {
     m_segments = ColumnSegments(m_adjacency.row_ptr, m_adjacency.cols, m_adjacency.columns, width);
+    if (narrow && narrow_copy_fits()) {
+      m_narrow_cols = NarrowColumns(m_adjacency.cols, m_adjacency.columns);
+    }
     return;
   }
-  // Taken: the indices are in the segments, or in m_own_cols where one segment holds them.
   if (m_own_cols.empty()) {
     m_own_cols = m_segments.csr_columns();
-    m_segments = ColumnSegments();  // its copy freed before the next is made
+    m_segments = ColumnSegments();
   }
   m_segments = ColumnSegments::taking(m_adjacency.row_ptr, m_own_cols, m_adjacency.columns, width);
+  if (narrow) m_narrow_cols = NarrowColumns::taking(m_own_cols, m_adjacency.columns);
+}
+
+bool NetworkForce::narrow_copy_fits() const {
+  const auto bytes = static_cast<std::size_t>(m_nnz) * sizeof(std::uint16_t);
+  return bytes <= available_memory_bytes() / 2;
 }
 
 void NetworkForce::prepare_segments(NodeIndex rows, int replicas) {
@@ -444,17 +470,17 @@ void NetworkForce::compute(const RotorState& state, std::vector<double>& g, Forc
   }
   if (m_precision == ForcePrecision::float64) {
     run_rows(m_adjacency.weights.empty() ? nullptr : m_adjacency.weights.data(), column_cs,
-             state.rows, nb, g);
+             state.rows, nb, g, outputs);
   } else {
     // The gathered table in float32 (one narrowing pass over the columns, O(columns x B), next
     // to the O(nnz x B) gather it halves).
     const auto& wide = m_identity_import ? m_owned_cs : m_column_cs;
     narrow(wide.data(), wide.size(), m_column_f32.data());
     run_rows(m_weights_f32.empty() ? nullptr : m_weights_f32.data(), m_column_f32.data(),
-             state.rows, nb, g);
+             state.rows, nb, g, outputs);
   }
-  // The rows' terms are formed in their finish either way (a square root and a product a row
-  // and replica, next to its gathers); the ordered pass over them only where they are read.
+  // The rows' terms (formed in their finish) and the ordered pass over them only where the sums
+  // are read.
   if (outputs == ForceOutputs::force_only) return;
   // Both sums of every replica in one ordered pass (each column is summed on its own, so this
   // equals two separate passes bit for bit).

@@ -12,18 +12,24 @@ namespace hmfnet {
 
 /// T: the storage of the gathered [cos, sin] table and the weights, and the type of the per-row
 /// accumulation (float32 halves the bytes the gather touches); the owned rows' cos and sin and
-/// the outputs stay double.
-template <typename T>
+/// the outputs stay double. I: the column indices' type, std::uint16_t where every column fits
+/// in 16 bits (narrow_columns.hpp), else NodeIndex.
+template <typename T, typename I = NodeIndex>
 struct RowKernelArgs {
   const EdgeOffset* row_ptr;
-  const NodeIndex* cols;
+  const I* cols;
   const T* weights;  // nullptr: 0/1 network
   const T* column_cs;
   const double* owned_cs;
   double inverse_n;
   double* g;
   double* y;
-  double* terms;  // rows x replicas x [|y_n|, Re(e^{-i theta_n} y_n)]
+  // rows x replicas x [|y_n|, Re(e^{-i theta_n} y_n)]; nullptr: not formed, for an evaluation
+  // whose sums no record reads (ForceOutputs::force_only), which then skips a square root, two
+  // products and two stores a row and replica: ER N = 10^4, degree 100, float32 with 8 replicas
+  // spent about a tenth of its step on them (docs/performance.md, "The terms only where the sums
+  // are read").
+  double* terms;
 };
 
 /// The partials one walk of a row forms in network_force.cpp's baseline rows_kernel, for
@@ -36,9 +42,9 @@ constexpr int baseline_walk_partials(std::size_t record_bytes) {
 /// Row r's outputs for replicas [first, first + count) of the run's nb from their four partial
 /// sums (partial j of the group's value v at p[j * stride + v]), combined as (s0 + s1) + (s2 +
 /// s3) in T: every row loop ends here, so they agree bit for bit whenever their partials do.
-template <typename T>
-inline void finish_replicas(const RowKernelArgs<T>& a, NodeIndex r, const T* p, std::size_t stride,
-                            int nb, int first, int count) {
+template <typename T, typename I>
+inline void finish_replicas(const RowKernelArgs<T, I>& a, NodeIndex r, const T* p,
+                            std::size_t stride, int nb, int first, int count) {
   const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(r) * nb + first;
   const double* o = a.owned_cs + 2 * base;
   for (int b = 0; b < count; ++b) {
@@ -50,14 +56,15 @@ inline void finish_replicas(const RowKernelArgs<T>& a, NodeIndex r, const T* p, 
     a.g[base + b] = a.inverse_n * (c * ys - s * yc);
     a.y[2 * (base + b)] = yc;
     a.y[2 * (base + b) + 1] = ys;
+    if (a.terms == nullptr) continue;
     a.terms[2 * (base + b)] = std::sqrt(yc * yc + ys * ys);
     a.terms[2 * (base + b) + 1] = c * yc + s * ys;
   }
 }
 
 /// Row r's outputs for all nb replicas (finish_replicas).
-template <typename T>
-inline void finish_row(const RowKernelArgs<T>& a, NodeIndex r, const T* p, std::size_t stride,
+template <typename T, typename I>
+inline void finish_row(const RowKernelArgs<T, I>& a, NodeIndex r, const T* p, std::size_t stride,
                        int nb) {
   finish_replicas(a, r, p, stride, nb, 0, nb);
 }

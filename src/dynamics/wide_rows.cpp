@@ -48,8 +48,8 @@ struct GroupPlace {
 };
 
 // acc += w q (or q on a 0/1 network) for the group's values of entry e's record.
-template <typename T, typename S, std::size_t V, bool Weighted>
-HMFNET_LANES_INLINE void add_entry(Lanes<T, V> (&acc)[S::k_registers], const RowKernelArgs<T>& a,
+template <typename T, typename S, std::size_t V, bool Weighted, typename I>
+HMFNET_LANES_INLINE void add_entry(Lanes<T, V> (&acc)[S::k_registers], const RowKernelArgs<T, I>& a,
                                    EdgeOffset e, GroupPlace place) {
   const T* q = a.column_cs + place.stride * static_cast<std::size_t>(a.cols[e]) + place.offset;
   add_lanes<T, V, S::k_record, Weighted>(acc, q, Weighted ? a.weights[e] : T(1));
@@ -84,8 +84,8 @@ HMFNET_LANES_INLINE D cos_lanes(const D& a, const D& b) {
 // c yc + s ys there, and o * y~ - (o * y~)~ is c ys - s yc; the terms take the cos lanes of the
 // first two, g that of the third times 1/N. sqrt is correctly rounded in every set (vsqrtpd;
 // -fno-math-errno lets GCC use it for the lanes).
-template <typename T, int B, std::size_t W>
-HMFNET_LANES_INLINE void finish_lanes(const RowKernelArgs<T>& a, NodeIndex r, const T* p,
+template <typename T, int B, std::size_t W, typename I>
+HMFNET_LANES_INLINE void finish_lanes(const RowKernelArgs<T, I>& a, NodeIndex r, const T* p,
                                       std::size_t c, GroupPlace place) {
   constexpr std::size_t record = 2 * static_cast<std::size_t>(B);
   using D = Lanes<double, W * sizeof(double)>;
@@ -95,21 +95,23 @@ HMFNET_LANES_INLINE void finish_lanes(const RowKernelArgs<T>& a, NodeIndex r, co
   const std::size_t at = place.stride * static_cast<std::size_t>(r) + place.offset + c;
   D o;
   load_lanes<double, sizeof(D)>(o, a.owned_cs + at);
-  const D q = y * y, dot = o * y, cross = o * swap_pairs(y);
+  const D cross = o * swap_pairs(y);
+  const D g = a.inverse_n * (cross - swap_pairs(cross));
+  std::memcpy(a.y + at, &y, sizeof y);
+  for (std::size_t j = 0; j < W; j += 2) a.g[at / 2 + j / 2] = g[j];
+  if (a.terms == nullptr) return;
+  const D q = y * y, dot = o * y;
   D norm = q + swap_pairs(q);
   for (std::size_t j = 0; j < W; ++j) norm[j] = __builtin_sqrt(norm[j]);
   const D coupling = dot + swap_pairs(dot);
-  const D g = a.inverse_n * (cross - swap_pairs(cross));
   const D terms = cos_lanes(norm, coupling);
-  std::memcpy(a.y + at, &y, sizeof y);
   std::memcpy(a.terms + at, &terms, sizeof terms);
-  for (std::size_t j = 0; j < W; j += 2) a.g[at / 2 + j / 2] = g[j];
 }
 
 // Row r's walks for one group of B replicas: rows_kernel's walks, C = S::k_partials partials a
 // walk, then the group's outputs.
-template <typename T, int B, std::size_t V, std::size_t budget, bool Weighted>
-HMFNET_LANES_INLINE void row_group(const RowKernelArgs<T>& a, NodeIndex r, GroupPlace place) {
+template <typename T, int B, std::size_t V, std::size_t budget, bool Weighted, typename I>
+HMFNET_LANES_INLINE void row_group(const RowKernelArgs<T, I>& a, NodeIndex r, GroupPlace place) {
   using S = Shape<T, B, V, budget>;
   constexpr std::size_t C = S::k_partials;
   const EdgeOffset begin = a.row_ptr[r], end = a.row_ptr[r + 1];
@@ -144,8 +146,8 @@ HMFNET_LANES_INLINE void row_group(const RowKernelArgs<T>& a, NodeIndex r, Group
 }
 
 // The row loop of one version: every row one group of all B replicas.
-template <typename T, int B, std::size_t V, std::size_t budget, bool Weighted>
-HMFNET_LANES_INLINE void rows_body(const RowKernelArgs<T>& a, NodeIndex rows) {
+template <typename T, int B, std::size_t V, std::size_t budget, bool Weighted, typename I>
+HMFNET_LANES_INLINE void rows_body(const RowKernelArgs<T, I>& a, NodeIndex rows) {
 #pragma omp for schedule(static)
   for (NodeIndex r = 0; r < rows; ++r) {
     row_group<T, B, V, budget, Weighted>(a, r, GroupPlace{2 * static_cast<std::size_t>(B), 0});
@@ -154,8 +156,8 @@ HMFNET_LANES_INLINE void rows_body(const RowKernelArgs<T>& a, NodeIndex rows) {
 
 // Replica b of a run of nb, alone, where no register of the set fits what is left of the count
 // (float64: one replica; float32: one to three): rows_kernel_single's four partials, in scalars.
-template <typename T, bool Weighted>
-HMFNET_LANES_INLINE void row_lane(const RowKernelArgs<T>& a, NodeIndex r, int nb, int b) {
+template <typename T, bool Weighted, typename I>
+HMFNET_LANES_INLINE void row_lane(const RowKernelArgs<T, I>& a, NodeIndex r, int nb, int b) {
   const auto stride = 2 * static_cast<std::size_t>(nb), offset = 2 * static_cast<std::size_t>(b);
   const EdgeOffset begin = a.row_ptr[r], end = a.row_ptr[r + 1];
   const EdgeOffset full = begin + (end - begin) / 4 * 4;
@@ -177,8 +179,8 @@ HMFNET_LANES_INLINE void row_lane(const RowKernelArgs<T>& a, NodeIndex r, int nb
 // V bytes, and the replicas left one at a time. Each replica's lane receives the additions it
 // would receive in a run of its own (the replicas are independent lanes), so the grouping
 // changes no bit; the row's indices are read once per group, from L1 after the first.
-template <typename T, std::size_t V, std::size_t budget, bool Weighted>
-HMFNET_LANES_INLINE void grouped_rows_body(const RowKernelArgs<T>& a, NodeIndex rows, int nb) {
+template <typename T, std::size_t V, std::size_t budget, bool Weighted, typename I>
+HMFNET_LANES_INLINE void grouped_rows_body(const RowKernelArgs<T, I>& a, NodeIndex rows, int nb) {
   const auto stride = 2 * static_cast<std::size_t>(nb);
   const auto place = [stride](int b) {
     return GroupPlace{stride, 2 * static_cast<std::size_t>(b)};
@@ -204,33 +206,33 @@ HMFNET_LANES_INLINE void grouped_rows_body(const RowKernelArgs<T>& a, NodeIndex 
 }
 
 // 32 registers of 64 bytes; a record of 32 bytes takes a 32-byte register (AVX-512 has AVX2).
-template <typename T, int B, bool Weighted>
-__attribute__((target("avx512f,avx512dq"))) void rows_avx512(const RowKernelArgs<T>& a,
+template <typename T, int B, bool Weighted, typename I>
+__attribute__((target("avx512f,avx512dq"))) void rows_avx512(const RowKernelArgs<T, I>& a,
                                                              NodeIndex rows) {
   rows_body<T, B, std::min(k_avx512_bytes, k_record_bytes<T, B>), k_avx512_budget, Weighted>(a,
                                                                                              rows);
 }
 
 // 16 registers of 32 bytes.
-template <typename T, int B, bool Weighted>
-__attribute__((target("avx2"))) void rows_avx2(const RowKernelArgs<T>& a, NodeIndex rows) {
+template <typename T, int B, bool Weighted, typename I>
+__attribute__((target("avx2"))) void rows_avx2(const RowKernelArgs<T, I>& a, NodeIndex rows) {
   rows_body<T, B, k_avx2_bytes, k_avx2_budget, Weighted>(a, rows);
 }
 
-template <typename T, bool Weighted>
-__attribute__((target("avx512f,avx512dq"))) void grouped_rows_avx512(const RowKernelArgs<T>& a,
+template <typename T, bool Weighted, typename I>
+__attribute__((target("avx512f,avx512dq"))) void grouped_rows_avx512(const RowKernelArgs<T, I>& a,
                                                                      NodeIndex rows, int nb) {
   grouped_rows_body<T, k_avx512_bytes, k_avx512_budget, Weighted>(a, rows, nb);
 }
 
-template <typename T, bool Weighted>
-__attribute__((target("avx2"))) void grouped_rows_avx2(const RowKernelArgs<T>& a, NodeIndex rows,
+template <typename T, bool Weighted, typename I>
+__attribute__((target("avx2"))) void grouped_rows_avx2(const RowKernelArgs<T, I>& a, NodeIndex rows,
                                                        int nb) {
   grouped_rows_body<T, k_avx2_bytes, k_avx2_budget, Weighted>(a, rows, nb);
 }
 
-template <typename T, int B, bool Weighted>
-void rows_in(const RowKernelArgs<T>& a, NodeIndex rows, SincosIsa isa) {
+template <typename T, int B, bool Weighted, typename I>
+void rows_in(const RowKernelArgs<T, I>& a, NodeIndex rows, SincosIsa isa) {
   if constexpr (k_record_bytes<T, B> >= 32) {
     if (isa == SincosIsa::avx512) {
       rows_avx512<T, B, Weighted>(a, rows);
@@ -242,8 +244,8 @@ void rows_in(const RowKernelArgs<T>& a, NodeIndex rows, SincosIsa isa) {
 
 // The counts wide_rows_serve allows, and in groups those wide_groups_serve allows; nothing for
 // another (a precondition of the callers).
-template <typename T, bool Weighted>
-void dispatch(const RowKernelArgs<T>& a, NodeIndex rows, int replicas, SincosIsa isa) {
+template <typename T, bool Weighted, typename I>
+void dispatch(const RowKernelArgs<T, I>& a, NodeIndex rows, int replicas, SincosIsa isa) {
   switch (replicas) {
     case 2:
       rows_in<T, 2, Weighted>(a, rows, isa);
@@ -478,8 +480,8 @@ int row_walk_partials(int replicas, SincosIsa isa) {
   return compiled ? baseline_walk_partials(record) : 4;  // run-time counts: one walk
 }
 
-template <typename T>
-void wide_rows(const RowKernelArgs<T>& a, NodeIndex rows, int replicas, SincosIsa isa) {
+template <typename T, typename I>
+void wide_rows(const RowKernelArgs<T, I>& a, NodeIndex rows, int replicas, SincosIsa isa) {
 #if defined(HMFNET_WIDE_ROWS_X86)
   if (a.weights == nullptr) {
     dispatch<T, false>(a, rows, replicas, isa);
@@ -517,6 +519,8 @@ template int row_walk_partials<float>(int, SincosIsa);
 template bool wide_rows_serve<float>(int, SincosIsa);
 template void wide_rows(const RowKernelArgs<double>&, NodeIndex, int, SincosIsa);
 template void wide_rows(const RowKernelArgs<float>&, NodeIndex, int, SincosIsa);
+template void wide_rows(const RowKernelArgs<double, std::uint16_t>&, NodeIndex, int, SincosIsa);
+template void wide_rows(const RowKernelArgs<float, std::uint16_t>&, NodeIndex, int, SincosIsa);
 
 template void wide_segment_runs(const SegmentPass<double, std::uint16_t>&, const double*, int,
                                 NodeIndex, NodeIndex, SincosIsa);

@@ -58,9 +58,10 @@ template <typename T>
 int row_walk_partials(int replicas, SincosIsa isa);
 
 /// Rows [0, rows) as rows_kernel forms them, in `isa`, where wide_loops_serve: an orphaned
-/// `omp for` (every thread of a team calls it; outside one, one thread does all the rows).
-template <typename T>
-void wide_rows(const RowKernelArgs<T>& a, NodeIndex rows, int replicas, SincosIsa isa);
+/// `omp for` (every thread of a team calls it; outside one, one thread does all the rows). I:
+/// the column indices' type (RowKernelArgs).
+template <typename T, typename I>
+void wide_rows(const RowKernelArgs<T, I>& a, NodeIndex rows, int replicas, SincosIsa isa);
 
 /// Rows [r0, r1) of one segment as scalar_segment_runs adds them (`weights`: the CSR's, nullptr
 /// on a 0/1 network), in `isa`, where wide_loops_serve (the same records).

@@ -34,14 +34,15 @@ RotorState replicas(NodeIndex first_row, NodeIndex rows, int count) {
 }
 
 // g of a full evaluation, then g alone (after the state's phases moved and back, so that a force
-// that skipped its passes would keep stale buffers, not the right ones): the same g, and the
-// sums as they were before the second evaluation.
+// that skipped its passes would keep stale buffers, not the right ones): the same g and local
+// fields y_n, and the sums as they were before the second evaluation.
 void check_force_only(CouplingForce& force, const RotorState& s, int threads) {
   const ThreadCountScope scope(threads);
   std::vector<double> g_full, g_only;
   ForceSums full, only;
   force.prepare(s, g_full, full);
   in_team([&] { force.evaluate(s, g_full, full); });
+  const std::vector<double> y_full = force.local_fields();
   RotorState moved = s;
   for (double& theta : moved.theta) theta += 0.7;
   force.prepare(moved, g_only, only);
@@ -51,6 +52,7 @@ void check_force_only(CouplingForce& force, const RotorState& s, int threads) {
   std::fill(only.coupling.begin(), only.coupling.end(), sentinel);
   in_team([&] { force.evaluate(s, g_only, only, ForceOutputs::force_only); });
   CHECK(test::bit_difference(g_only, g_full) == "");
+  CHECK(test::bit_difference(force.local_fields(), y_full) == "");
   CHECK(test::bit_difference(only.order, std::vector<double>(full.order.size(), sentinel)) == "");
   CHECK(test::bit_difference(only.coupling, std::vector<double>(full.coupling.size(), sentinel)) ==
         "");

@@ -235,7 +235,8 @@ TEST_CASE(
   // Replica counts 1, 2, 4, 8 and 3 take every path of network_force.cpp's dispatch (the
   // one-replica kernel, the compiled widths: the wide loops where the CPU has AVX2, the baseline
   // ones with their partials per pass under unit.baseline_row_loops; 3: the wide loops' groups,
-  // 2 + 1, and the baseline loop's run-time width under unit.baseline_row_loops).
+  // 2 + 1, and the baseline loop's run-time width under unit.baseline_row_loops), over 16-bit
+  // column indices (narrow_columns.hpp) and 32-bit ones.
   constexpr double h = 0.05;
   constexpr int steps = 20;
   for (const ForcePrecision precision : {ForcePrecision::float64, ForcePrecision::float32}) {
@@ -249,43 +250,46 @@ TEST_CASE(
           ic.push_back({6.0, 1.0, static_cast<std::uint64_t>(b + 41)});
           K.push_back(2.0 + 0.75 * b);
         }
-        RotorState cpu = initial_state(network.first_row(), network.local_size(), ic);
-        RotorState hand = cpu;
-        NetworkForce force(network, precision);
-        ForceEvaluation f(force);
-        f.update(cpu);
-        HandForce by_hand(network, precision);
-        by_hand.evaluate(hand);
-        const LeapFrog leapfrog;
-        for (int step = 0; step < steps; ++step) {
-          leapfrog.step(cpu, h, K, f);
-          // LeapFrog::advance: kick_drift by (h / 2, h), the force at the new phases, kick by h
-          // / 2.
-          const double half = 0.5 * h;
-          for (NodeIndex r = 0; r < hand.rows; ++r) {
-            for (int b = 0; b < replicas; ++b) {
-              const std::size_t k = hand.at(r, b);
-              const auto kb = static_cast<std::size_t>(b);
-              hand.p[k] = kicked_momentum(hand.p[k], half, K[kb], by_hand.g[k]);
-              hand.theta[k] = drifted_angle(hand.theta[k], h, hand.p[k]);
-            }
-          }
+        for (const bool narrow : {true, false}) {
+          RotorState cpu = initial_state(network.first_row(), network.local_size(), ic);
+          RotorState hand = cpu;
+          NetworkForce force(network, precision, k_automatic_segments, narrow);
+          ForceEvaluation f(force);
+          f.update(cpu);
+          HandForce by_hand(network, precision);
           by_hand.evaluate(hand);
-          for (NodeIndex r = 0; r < hand.rows; ++r) {
-            for (int b = 0; b < replicas; ++b) {
-              const std::size_t k = hand.at(r, b);
-              hand.p[k] =
-                  kicked_momentum(hand.p[k], half, K[static_cast<std::size_t>(b)], by_hand.g[k]);
+          const LeapFrog leapfrog;
+          for (int step = 0; step < steps; ++step) {
+            leapfrog.step(cpu, h, K, f);
+            // LeapFrog::advance: kick_drift by (h / 2, h), the force at the new phases, kick by h
+            // / 2.
+            const double half = 0.5 * h;
+            for (NodeIndex r = 0; r < hand.rows; ++r) {
+              for (int b = 0; b < replicas; ++b) {
+                const std::size_t k = hand.at(r, b);
+                const auto kb = static_cast<std::size_t>(b);
+                hand.p[k] = kicked_momentum(hand.p[k], half, K[kb], by_hand.g[k]);
+                hand.theta[k] = drifted_angle(hand.theta[k], h, hand.p[k]);
+              }
+            }
+            by_hand.evaluate(hand);
+            for (NodeIndex r = 0; r < hand.rows; ++r) {
+              for (int b = 0; b < replicas; ++b) {
+                const std::size_t k = hand.at(r, b);
+                hand.p[k] =
+                    kicked_momentum(hand.p[k], half, K[static_cast<std::size_t>(b)], by_hand.g[k]);
+              }
             }
           }
+          INFO(to_string(precision)
+               << (weighted ? ", weighted" : ", 0/1") << ", " << replicas << " replicas, " << steps
+               << " steps of h = " << h << ", " << (narrow ? 16 : 32) << "-bit column indices");
+          CHECK(bit_difference(by_hand.g, f.g()).count == 0);
+          CHECK(bit_difference(by_hand.y, force.local_fields()).count == 0);
+          CHECK(bit_difference(by_hand.term_sums, interleaved_sums(f.sums())).count == 0);
+          CHECK(bit_difference(hand.theta, cpu.theta).count == 0);
+          CHECK(bit_difference(hand.p, cpu.p).count == 0);
         }
-        INFO(to_string(precision) << (weighted ? ", weighted" : ", 0/1") << ", " << replicas
-                                  << " replicas, " << steps << " steps of h = " << h);
-        CHECK(bit_difference(by_hand.g, f.g()).count == 0);
-        CHECK(bit_difference(by_hand.y, force.local_fields()).count == 0);
-        CHECK(bit_difference(by_hand.term_sums, interleaved_sums(f.sums())).count == 0);
-        CHECK(bit_difference(hand.theta, cpu.theta).count == 0);
-        CHECK(bit_difference(hand.p, cpu.p).count == 0);
       }
     }
   }

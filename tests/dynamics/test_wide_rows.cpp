@@ -3,10 +3,11 @@
 // partial j over the row's entries j, j + 4, ... of its first 4 floor(d / 4), the last d mod 4
 // into partial 0, each from +0.0. Rows of degree 0 to 40 (every tail), 0/1 and weighted rows,
 // float64 and float32, 2, 4 and 8 replicas and counts run in groups (3 to 24), in every
-// instruction set this CPU runs; tables with
-// -0.0 and subnormals. A segment's runs (wide_segment_runs) leave the carried partials and cursors
-// of the scalar loop, segment after segment, in 16- and 32-bit segments, for row ranges that start
-// anywhere.
+// instruction set this CPU runs, over 32- and 16-bit column indices, with and without the terms;
+// tables with -0.0 and subnormals. A segment's runs (wide_segment_runs) leave the carried partials
+// and cursors of the scalar loop, segment after segment, in 16- and 32-bit segments, for row ranges
+// that start anywhere.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <cstring>
@@ -17,6 +18,7 @@
 #include "dynamics/column_segments.hpp"
 #include "dynamics/kernel_arithmetic.hpp"
 #include "dynamics/wide_rows.hpp"
+#include "support/bit_difference.hpp"
 #include "support/random_rows.hpp"
 
 using namespace hmfnet;
@@ -101,6 +103,26 @@ void compare(SincosIsa isa, const Rows& rows, int replicas, bool weighted) {
   INFO(sincos_isa_name(isa) << ", " << sizeof(T) * 8 << "-bit, B = " << replicas
                             << (weighted ? ", weighted" : ", 0/1"));
   REQUIRE(wide == reference);
+  // Without the terms (an evaluation whose sums no record reads): the same g and y, the terms'
+  // buffer as it was.
+  Outputs without(static_cast<std::size_t>(n), replicas);
+  std::fill(without.terms.begin(), without.terms.end(), 7.0);
+  RowKernelArgs<T> no_terms = args(rows, weights, table, owned, without);
+  no_terms.terms = nullptr;
+  wide_rows(no_terms, n, replicas, isa);
+  CHECK(test::bit_difference(without.g, reference.g) == "");
+  CHECK(test::bit_difference(without.y, reference.y) == "");
+  CHECK(test::bit_difference(without.terms, std::vector<double>(without.terms.size(), 7.0)) == "");
+  // The same rows over 16-bit column indices (narrow_columns.hpp): the same bits.
+  const std::vector<std::uint16_t> cols16(rows.cols.begin(), rows.cols.end());
+  Outputs narrow(static_cast<std::size_t>(n), replicas);
+  const RowKernelArgs<T> wide_args = args(rows, weights, table, owned, narrow);
+  const RowKernelArgs<T, std::uint16_t> narrow_args{
+      wide_args.row_ptr,   cols16.data(),      wide_args.weights,
+      wide_args.column_cs, wide_args.owned_cs, wide_args.inverse_n,
+      wide_args.g,         wide_args.y,        wide_args.terms};
+  wide_rows(narrow_args, n, replicas, isa);
+  CHECK(narrow == reference);
 }
 
 // Every segment of `cut` (indices of type I) over rows [origin, n), the carry held from row
