@@ -3,10 +3,11 @@
 // (at most k_narrow_segment_columns columns: networks of up to 65,536 nodes on one rank, a
 // rank's owned and ghost columns under MPI). Each stored entry's index is read once a step
 // beside its gathered record; half the bytes keep more of the [cos, sin] table in L2 while the
-// index stream passes through it: ER N = 10^4, degree 100, 1 thread, through `hmfnet simulate`
-// 1.06x (float32, 8 replicas), 1.07x (float32, 4) and 1.12x (float64, 8) on the AMD EPYC family
-// 25 model 17 (docs/performance.md, "16-bit column indices in the unblocked rows"). The indices
-// are the CSR's own, so the row loops add the same records in the same order: the same bits.
+// index stream passes through it. Alone (against the terms-only-where-read change), ER
+// N = 10^4, degree 100, 1 thread, through `hmfnet simulate`: 1.06x (float32, 8 replicas), 1.07x
+// (float32, 4) and 1.12x (float64, 8) on the AMD EPYC family 25 model 17 (docs/performance.md,
+// "16-bit column indices and the terms only where the sums are read"). The indices are the
+// CSR's own, so the row loops add the same records in the same order: the same bits.
 #include <cstddef>
 #include <cstdint>
 #include <memory>
