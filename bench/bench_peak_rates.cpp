@@ -11,6 +11,10 @@
 //    AVX2 where this CPU has them, each thread its contiguous share: the best rate at which the
 //    column indices (4 B a stored entry, read once a step in order) can come from the cache level
 //    or memory that holds an array of their size.
+//  - StreamUpdate/KiB/threads: every double of an array of that size read, added to and written
+//    back in place, each thread its contiguous share: the best rate at which a pass that must
+//    read and rewrite every cell once (the complete graph's fused pass: theta, p and [cos, sin]
+//    of every rotor and replica, 32 B a cell) moves its bytes, counted read and written.
 // Rates: pairs_per_s and bytes_per_s counters. Each is measured in 3 repetitions and the table
 // takes the best (a ceiling is the highest rate seen, never a mean): in one table of
 // docs/performance.md the 256 KiB read measured 98.7 GB/s after its warm-up where the table
@@ -205,6 +209,67 @@ void StreamRead(benchmark::State& state) {
                          benchmark::Counter::kIsIterationInvariantRate);
 }
 
+// x[0, count) += 1 in place in the widest vectors this CPU has (count a multiple of 32), four
+// vectors in flight; no chain between them, so only the stream limits it.
+#if defined(__x86_64__)
+__attribute__((target("avx512f"))) void update_64(double* x, std::size_t count) {
+  const __m512d one = _mm512_set1_pd(1.0);
+  for (std::size_t k = 0; k < count; k += 32) {
+    for (std::size_t j = 0; j < 4; ++j) {
+      double* const at = x + k + 8 * j;
+      _mm512_storeu_pd(at, _mm512_add_pd(_mm512_loadu_pd(at), one));
+    }
+  }
+}
+
+__attribute__((target("avx2"))) void update_32(double* x, std::size_t count) {
+  const __m256d one = _mm256_set1_pd(1.0);
+  for (std::size_t k = 0; k < count; k += 16) {
+    for (std::size_t j = 0; j < 4; ++j) {
+      double* const at = x + k + 4 * j;
+      _mm256_storeu_pd(at, _mm256_add_pd(_mm256_loadu_pd(at), one));
+    }
+  }
+}
+#endif
+
+void update(double* x, std::size_t count) {
+#if defined(__x86_64__)
+  if (__builtin_cpu_supports("avx512f") != 0) return update_64(x, count);
+  if (__builtin_cpu_supports("avx2") != 0) return update_32(x, count);
+#endif
+  for (std::size_t k = 0; k < count; ++k) x[k] += 1.0;
+}
+
+void StreamUpdate(benchmark::State& state) {
+  const auto bytes = static_cast<std::size_t>(state.range(0)) * 1024;
+  const auto threads = static_cast<int>(state.range(1));
+  omp_set_num_threads(threads);
+  const std::size_t count = bytes / sizeof(double) / 32 * 32;
+  std::vector<double> cells(count);
+  // First touched by the thread that updates it (its own pages, as the force's cells are).
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < count; ++k) cells[k] = static_cast<double>(k & 1023U);
+#if defined(__x86_64__)
+  __builtin_cpu_init();
+#endif
+  for (auto _ : state) {
+#pragma omp parallel
+    {
+      const auto t = static_cast<std::size_t>(omp_get_thread_num());
+      const auto n = static_cast<std::size_t>(omp_get_num_threads());
+      const std::size_t groups = count / 32;
+      const std::size_t first = groups * t / n * 32, last = groups * (t + 1) / n * 32;
+      update(cells.data() + first, last - first);
+    }
+    benchmark::DoNotOptimize(cells.data());
+    benchmark::ClobberMemory();
+  }
+  state.counters["bytes_per_s"] =
+      benchmark::Counter(static_cast<double>(2 * count * sizeof(double)),
+                         benchmark::Counter::kIsIterationInvariantRate);
+}
+
 }  // namespace
 
 constexpr int k_repetitions = 3;
@@ -221,6 +286,14 @@ BENCHMARK(L1LoadAdd)
 // 169-176 GB/s, Intel Xeon), and a ceiling measured low would let code run above it.
 BENCHMARK(StreamRead)
     ->ArgsProduct({{256, 3906, 16384, 390625}, {1, 2}})
+    ->MinWarmUpTime(0.3)
+    ->Repetitions(k_repetitions)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+// The complete graph's cells in the rank-one table (bench/rank_one_table.sh): K_N N = 10^5 with 16
+// replicas, 32 B a cell: 50,000 KiB, beyond the L3 a thread of the guests measured so far holds.
+BENCHMARK(StreamUpdate)
+    ->ArgsProduct({{50000, 390625}, {1, 2}})
     ->MinWarmUpTime(0.3)
     ->Repetitions(k_repetitions)
     ->UseRealTime()
