@@ -106,9 +106,9 @@ struct SimulateHooks {
 SimulateOutcome simulate(const SimulateRequest& r, const DistributedInput& input,
                          const SimulateHooks& hooks = {});
 /// The same run on a network that is the run's alone (the CLI reads it for this run, Python
-/// distributes its Network afresh for each): the
-/// sparse force may take its column indices when it cuts them into segments
-/// (NetworkForce::take_columns), 4 bytes per stored entry less at the peak; the same results.
+/// distributes its Network afresh for each): the sparse force may take its column indices where it
+/// cuts them into segments or reads them in 16 bits (NetworkForce::take_columns), 4 bytes per
+/// stored entry less at the peak; the same results.
 SimulateOutcome simulate(const SimulateRequest& r, DistributedInput&& input,
                          const SimulateHooks& hooks = {});
 

@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "network/network.hpp"
@@ -28,6 +29,18 @@ class NarrowColumns {
   /// As above, taking `cols` over: its pages go back to the system as they are copied (the peak
   /// holds the 4-byte indices or the copy, not both), and `cols` is left empty.
   static NarrowColumns taking(std::vector<NodeIndex>& cols, NodeIndex columns);
+
+  /// Moved from, a copy holds no indices (empty()), as a default one.
+  NarrowColumns(NarrowColumns&& other) noexcept
+      : m_size(std::exchange(other.m_size, 0)), m_cols(std::move(other.m_cols)) {}
+  NarrowColumns& operator=(NarrowColumns&& other) noexcept {
+    m_size = std::exchange(other.m_size, 0);
+    m_cols = std::move(other.m_cols);
+    return *this;
+  }
+  NarrowColumns(const NarrowColumns&) = delete;
+  NarrowColumns& operator=(const NarrowColumns&) = delete;
+  ~NarrowColumns() = default;
 
   /// Whether `columns` columns have 16-bit indices.
   static bool fits(NodeIndex columns);

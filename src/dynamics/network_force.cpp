@@ -347,6 +347,9 @@ void NetworkForce::take_columns(DistributedNetwork& network) {
 void NetworkForce::cut(NodeIndex width) {
   const bool segmented = width < m_adjacency.columns;
   const bool narrow = !segmented && m_allow_narrow && NarrowColumns::fits(m_adjacency.columns);
+  // Taken before this cut, the indices live only in this force's copies; taken now, the
+  // network's own arrive in m_own_cols and a 16-bit copy made before is a copy of them.
+  const bool took_before = m_took_columns;
   if (m_column_owner != nullptr && !m_took_columns && (segmented || narrow)) {
     m_own_cols = m_column_owner->release_columns();
     m_took_columns = true;
@@ -354,7 +357,7 @@ void NetworkForce::cut(NodeIndex width) {
   // Taken, the indices are in the segments, in the 16-bit copy or in m_own_cols: back in
   // m_own_cols first, each copy freed before the next is made.
   if (!m_narrow_cols.empty()) {
-    if (m_took_columns) m_own_cols = m_narrow_cols.widened();
+    if (took_before) m_own_cols = m_narrow_cols.widened();
     m_narrow_cols = NarrowColumns();
   }
   if (!m_took_columns) {

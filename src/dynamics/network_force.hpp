@@ -13,8 +13,9 @@
 // gain is half the bytes per neighbour in the gather that bounds the kernel.
 // Where the gathered table outgrows the L2 cache the rows are walked segment by segment
 // (column_segments.hpp: CSR segmenting), with the same additions in the same order: the same
-// bits as the unblocked walk, for any segment width; where it fits in L2 and every column index
-// fits in 16 bits, the unblocked walk reads them in 16 bits (narrow_columns.hpp).
+// bits as the unblocked walk, for any segment width; wherever the rows are walked unblocked and
+// every column index fits in 16 bits (at most 65,536 columns on the rank), the walk reads them in
+// 16 bits (narrow_columns.hpp).
 #include <cstdint>
 #include <optional>
 #include <vector>

@@ -25,10 +25,10 @@ struct RowKernelArgs {
   double* g;
   double* y;
   // rows x replicas x [|y_n|, Re(e^{-i theta_n} y_n)]; nullptr: not formed, for an evaluation
-  // whose sums no record reads (ForceOutputs::force_only), which then skips a square root, two
-  // products and two stores a row and replica: at ER N = 10^4, degree 100, float32 with 8
-  // replicas, the finish took 11-15% of the row loop's samples (docs/performance.md, "16-bit
-  // column indices and the terms only where the sums are read").
+  // whose sums no record reads (ForceOutputs::force_only), which then skips a square root, four
+  // products, two additions and two stores a row and replica: at ER N = 10^4, degree 100, float32
+  // with 8 replicas, the finish took 11-15% of the row loop's samples (docs/performance.md,
+  // "16-bit column indices and the terms only where the sums are read").
   double* terms;
 };
 

@@ -289,6 +289,7 @@ TEST_CASE(
           CHECK(bit_difference(by_hand.term_sums, interleaved_sums(f.sums())).count == 0);
           CHECK(bit_difference(hand.theta, cpu.theta).count == 0);
           CHECK(bit_difference(hand.p, cpu.p).count == 0);
+          CHECK(force.narrow_columns() == narrow);
         }
       }
     }
