@@ -1,8 +1,10 @@
 #include "dynamics/device_stepper.hpp"
 
 #include <algorithm>
+#include <iostream>
 
 #include "core/error.hpp"
+#include "dynamics/device_assignment.hpp"
 #include "dynamics/network_force.hpp"
 #include "dynamics/rank_one_force.hpp"
 #include "dynamics/splitting_coefficients.hpp"
@@ -33,9 +35,6 @@ void check_network(const CouplingForce& force) {
 }  // namespace
 
 void require_device_for(const SimulationParameters& params) {
-  if (ParallelSession::ranks() > 1) {
-    refuse("one MPI rank only (this run has " + std::to_string(ParallelSession::ranks()) + ")");
-  }
   for (std::size_t k = 0; k < params.K.size(); ++k) {
     const std::string method = step_at(params, k).integrator;
     if (!splitting_coefficients(method)) {
@@ -54,8 +53,12 @@ namespace {
 // Over cuda::SparseEnsemble or cuda::RankOneEnsemble.
 class DeviceStepper : public EnsembleStepper {
  public:
-  DeviceStepper(std::unique_ptr<cuda::DeviceEnsemble> ensemble, CouplingForce& force)
-      : m_ensemble(std::move(ensemble)), m_force(force), m_device(cuda::device_description()) {}
+  /// `sharing`: what follows the device's description (the ranks and how they share it).
+  DeviceStepper(std::unique_ptr<cuda::DeviceEnsemble> ensemble, CouplingForce& force,
+                const std::string& sharing)
+      : m_ensemble(std::move(ensemble)),
+        m_force(force),
+        m_device(cuda::device_description() + sharing) {}
 
   void set_state(const RotorState& state) override {
     m_state = state;
@@ -123,11 +126,13 @@ class DeviceStepper : public EnsembleStepper {
   ForceSums m_host_sums;
 };
 
-// This rank's rows as the device takes them (one rank: the column space is the rows).
+// This rank's rows as the device takes them, over its column space (one rank: the rows).
 cuda::HostCsr host_csr(const DistributedNetwork& network) {
   const auto& rows = network.local_adjacency();
+  if (rows.columns > INT32_MAX) refuse("a column space of more than 2^31 - 1 columns on a rank");
   cuda::HostCsr csr;
   csr.rows = network.local_size();
+  csr.column_count = rows.columns;
   csr.offsets.assign(rows.row_ptr.begin(), rows.row_ptr.end());
   csr.columns.reserve(rows.cols.size());
   for (const NodeIndex c : rows.cols) csr.columns.push_back(static_cast<std::int32_t>(c));
@@ -135,22 +140,61 @@ cuda::HostCsr host_csr(const DistributedNetwork& network) {
   return csr;
 }
 
+// Over ranks, what each evaluation exchanges through the host, as the CPU's forces do: the
+// ghosts' [cos, sin] through the network's Tpetra Import (network_force.cpp), Z summed over the
+// ranks (rank_one_force.cpp). `network` outlives the stepper (make_device_stepper's contract).
+cuda::RankExchange rank_exchange(const DistributedNetwork& network, bool sparse) {
+  cuda::RankExchange ranks;
+  ranks.global_rows = network.global_size();
+  if (sparse) {
+    ranks.import_columns = [&network](const double* owned, int width, double* columns) {
+      network.import_columns(owned, width, columns);
+    };
+  } else {
+    ranks.sum_over_ranks = [z = std::vector<double>()](double* values, int count) mutable {
+      z.assign(values, values + count);
+      ParallelSession::sum_in_place(z);
+      std::copy(z.begin(), z.end(), values);
+    };
+  }
+  return ranks;
+}
+
 // The ensemble of `force` on the device: the rank-one force of the complete graph, or the sparse
-// force on the network's rows.
+// force on the network's rows; over ranks, this rank's rows with their exchange.
 std::unique_ptr<cuda::DeviceEnsemble> device_ensemble(const DistributedNetwork& network,
                                                       const CouplingForce& force,
                                                       const SimulationParameters& params) {
   const int replicas = static_cast<int>(lanes(params));
+  const bool one_rank = ParallelSession::ranks() == 1;
   if (const auto* rank_one = dynamic_cast<const RankOneForce*>(&force)) {
     const RankOneStructure& s = rank_one->structure();
-    return std::make_unique<cuda::RankOneEnsemble>(s.a, s.diagonal, replicas);
+    if (one_rank) return std::make_unique<cuda::RankOneEnsemble>(s.a, s.diagonal, replicas);
+    const auto first = s.a.begin() + network.first_row();
+    const std::vector<double> a(first, first + network.local_size());
+    return std::make_unique<cuda::RankOneEnsemble>(a, s.diagonal, replicas,
+                                                   rank_exchange(network, false));
   }
-  if (!network.columns_are_owned_rows()) refuse("the network's columns are not its rows");
   const auto& sparse = dynamic_cast<const NetworkForce&>(force);
   const cuda::DevicePrecision precision = sparse.precision() == ForcePrecision::float64
                                               ? cuda::DevicePrecision::float64
                                               : cuda::DevicePrecision::float32;
-  return std::make_unique<cuda::SparseEnsemble>(host_csr(network), replicas, precision);
+  if (network.columns_are_owned_rows()) {
+    return std::make_unique<cuda::SparseEnsemble>(host_csr(network), replicas, precision);
+  }
+  return std::make_unique<cuda::SparseEnsemble>(host_csr(network), replicas, precision,
+                                                rank_exchange(network, true));
+}
+
+// This rank's device: the machine's ranks take its devices in turn; where they share one, the
+// run says so once (rank 0, on the standard error, and in the device's line of the output).
+std::string use_assigned_device(const ParallelSession::MachineRanks& machine) {
+  const DeviceAssignment a = assign_device(machine.index, machine.count, cuda::device_count());
+  cuda::use_device(a.device);
+  if (a.shared && ParallelSession::rank() == 0) std::cerr << "hmfnet: note: " << a.note << "\n";
+  if (a.shared) return "; " + a.note;
+  const int ranks = ParallelSession::ranks();
+  return ranks == 1 ? std::string() : "; " + std::to_string(ranks) + " MPI ranks, a device each";
 }
 
 }  // namespace
@@ -165,8 +209,21 @@ std::unique_ptr<EnsembleStepper> make_device_stepper(const DistributedNetwork& n
                                                      const SimulationParameters& params) {
   require_device_for(params);
   check_network(force);
-  if (network.local_size() > INT32_MAX) refuse("more than 2^31 - 1 rows");
-  auto stepper = std::make_unique<DeviceStepper>(device_ensemble(network, force, params), force);
+  const ParallelSession::MachineRanks machine = ParallelSession::machine_ranks();
+  std::unique_ptr<DeviceStepper> stepper;
+  const auto build = [&] {
+    if (network.local_size() > INT32_MAX) refuse("more than 2^31 - 1 rows on a rank");
+    const std::string sharing = use_assigned_device(machine);
+    stepper =
+        std::make_unique<DeviceStepper>(device_ensemble(network, force, params), force, sharing);
+  };
+  // Over ranks, a rank whose part the device refuses (its memory, a rank without rows) fails
+  // every rank with its message, before the first collective exchange.
+  if (ParallelSession::ranks() == 1) {
+    build();
+  } else {
+    ParallelSession::agree(build);
+  }
   if (params.node_data) stepper->keep_fields();
   return stepper;
 }

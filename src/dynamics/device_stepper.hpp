@@ -8,8 +8,11 @@
 // order sums. With node data (which read every step's state and fields) the device also keeps
 // each cell's y_n, and both are copied back each step.
 //
+// Over MPI ranks each rank steps its own rows on a device of its machine (device_assignment.hpp),
+// the ghosts' [cos, sin] or Z crossing through the host at each evaluation as the CPU's forces
+// exchange them (cuda/rank_exchange.hpp): the CPU's bits at the same rank count.
 // Not on the device (each refused by make_device_stepper in one line, before any file is
-// written): more than one MPI rank and methods that are no kick-drift splitting (rk4).
+// written): methods that are no kick-drift splitting (rk4).
 #include <memory>
 #include <string>
 
@@ -25,7 +28,7 @@ namespace hmfnet {
 std::string cuda_unavailable();
 
 /// What needs no network, checked before it is read: throws ParameterError naming the first
-/// option the device does not take (ranks, the integrator), then a missing device.
+/// option the device does not take (the integrator), then a missing device.
 void require_device_for(const SimulationParameters& params);
 
 /// The device's stepper for `params` on this rank's rows with `force` (whose kind and precision

@@ -1,7 +1,7 @@
 #include "parallel/parallel_session.hpp"
 
 #include <sys/resource.h>
-#include <unistd.h>  // environ
+#include <unistd.h>  // environ, gethostname
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Core.hpp>
@@ -170,6 +170,25 @@ std::vector<std::int64_t> ParallelSession::all_gather(std::int64_t mine) {
   std::vector<std::int64_t> values(slots.size());
   for (std::size_t p = 0; p < slots.size(); ++p) values[p] = static_cast<std::int64_t>(slots[p]);
   return values;
+}
+
+ParallelSession::MachineRanks ParallelSession::machine_ranks() {
+  std::array<char, 256> host{};
+  if (gethostname(host.data(), host.size() - 1) != 0) host[0] = '\0';
+  // The host name's FNV-1a hash stands for it: one 64-bit value a rank in one all_gather.
+  std::uint64_t hash = 14695981039346656037ULL;
+  for (const char* c = host.data(); *c != '\0'; ++c) {
+    hash = (hash ^ static_cast<unsigned char>(*c)) * 1099511628211ULL;
+  }
+  const std::vector<std::int64_t> hosts = all_gather(static_cast<std::int64_t>(hash));
+  MachineRanks m;
+  m.count = 0;
+  for (std::size_t r = 0; r < hosts.size(); ++r) {
+    if (hosts[r] != static_cast<std::int64_t>(hash)) continue;
+    if (static_cast<int>(r) < rank()) ++m.index;
+    ++m.count;
+  }
+  return m;
 }
 
 void ParallelSession::sum_in_place(std::vector<double>& values) {

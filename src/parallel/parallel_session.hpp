@@ -50,6 +50,14 @@ class ParallelSession {
   /// Each rank's value, indexed by rank, on every rank. Collective.
   static std::vector<std::int64_t> all_gather(std::int64_t mine);
 
+  /// The ranks on this rank's machine (same host name): how many, and this rank's place among
+  /// them in rank order (0 first). Collective.
+  struct MachineRanks {
+    int index = 0;
+    int count = 1;
+  };
+  static MachineRanks machine_ranks();
+
   /// Point to point and from one rank to all (length travels first). Blocking.
   static void send(const std::vector<std::int64_t>& values, int destination);
   static std::vector<std::int64_t> receive(int source);

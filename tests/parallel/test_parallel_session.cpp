@@ -14,6 +14,13 @@
 
 using namespace hmfnet;
 
+TEST_CASE("The ranks of one machine number themselves in rank order", "[parallel_session]") {
+  // mpirun starts the test's ranks on this one machine: each is its rank among them all.
+  const ParallelSession::MachineRanks m = ParallelSession::machine_ranks();
+  CHECK(m.count == ParallelSession::ranks());
+  CHECK(m.index == ParallelSession::rank());
+}
+
 TEST_CASE("Element-wise max and sum over ranks reach every rank", "[parallel_session]") {
   const auto r = static_cast<double>(ParallelSession::rank());
   const auto p = static_cast<double>(ParallelSession::ranks());

@@ -8,6 +8,30 @@
 
 namespace hmfnet::cuda {
 
+namespace {
+
+int current_device() {
+  int device = 0;
+  check(cudaGetDevice(&device), "cudaGetDevice");
+  return device;
+}
+
+}  // namespace
+
+int device_count() {
+  int count = 0;
+  return cudaGetDeviceCount(&count) == cudaSuccess ? count : 0;
+}
+
+void use_device(int index) {
+  const int count = device_count();
+  if (index < 0 || index >= count) {
+    throw DeviceError("CUDA device " + std::to_string(index) + " does not exist (" +
+                      std::to_string(count) + " found)");
+  }
+  check(cudaSetDevice(index), "cudaSetDevice");
+}
+
 bool device_usable(std::string& why) {
   int count = 0;
   const cudaError_t status = cudaGetDeviceCount(&count);
@@ -17,7 +41,9 @@ bool device_usable(std::string& why) {
     return false;
   }
   cudaDeviceProp properties{};
-  if (cudaGetDeviceProperties(&properties, 0) != cudaSuccess) {
+  int device = 0;
+  if (cudaGetDevice(&device) != cudaSuccess ||
+      cudaGetDeviceProperties(&properties, device) != cudaSuccess) {
     why = "cudaGetDeviceProperties failed";
     return false;
   }
@@ -33,7 +59,7 @@ bool device_usable(std::string& why) {
 
 std::string device_description() {
   cudaDeviceProp pr{};
-  check(cudaGetDeviceProperties(&pr, 0), "cudaGetDeviceProperties");
+  check(cudaGetDeviceProperties(&pr, current_device()), "cudaGetDeviceProperties");
   return std::string(pr.name) + ", " + std::to_string(pr.totalGlobalMem >> 20) + " MiB, " +
          std::to_string(pr.multiProcessorCount) + " SMs, L2 " +
          std::to_string(pr.l2CacheSize >> 20) + " MiB, compute capability " +

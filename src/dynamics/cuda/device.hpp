@@ -13,10 +13,18 @@ class DeviceError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Whether a CUDA device can run this build's code; if not, `why` says why in one line.
+/// CUDA devices this process sees (0 where there is no driver or no device).
+int device_count();
+
+/// Makes device `index` (0 <= index < device_count()) the one every later call of this thread
+/// runs on (device 0 until then). Throws DeviceError otherwise.
+void use_device(int index);
+
+/// Whether the current CUDA device can run this build's code; if not, `why` says why in one
+/// line.
 bool device_usable(std::string& why);
 
-/// The device's name, memory and multiprocessor count, in one line.
+/// The current device's name, memory and multiprocessor count, in one line.
 std::string device_description();
 
 }  // namespace hmfnet::cuda

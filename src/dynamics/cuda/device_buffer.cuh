@@ -75,7 +75,7 @@ inline unsigned blocks_for(std::size_t n, int threads) {
                                static_cast<std::size_t>(threads));
 }
 
-/// Throws DeviceError unless device 0 can run this build (device_usable).
+/// Throws DeviceError unless the current device can run this build (device_usable).
 void require_device();
 
 /// Throws DeviceError naming the bytes needed and free when `needed` exceeds the free memory.

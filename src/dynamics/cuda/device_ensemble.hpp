@@ -19,13 +19,16 @@ namespace hmfnet::cuda {
 /// The gathered [cos, sin] table and the row sums in double or in float (ForcePrecision).
 enum class DevicePrecision { float64, float32 };
 
-/// A network's rows in CSR on the host: offsets has rows + 1 entries, columns index [0, rows),
-/// weights A_nm (the float32 table sums them as floats, as network_force.cpp does) or none.
+/// A network's rows in CSR on the host: offsets has rows + 1 entries, columns index the column
+/// space [0, column_count) (one rank: the rows themselves; over ranks: DistributedNetwork::
+/// LocalAdjacency's, the owned rows and the ghosts in ascending global order), weights A_nm
+/// (the float32 table sums them as floats, as network_force.cpp does) or none.
 struct HostCsr {
   std::int64_t rows = 0;
   std::vector<std::int64_t> offsets;
   std::vector<std::int32_t> columns;
-  std::vector<double> weights;  ///< one per column entry, or empty: 0/1 entries
+  std::vector<double> weights;    ///< one per column entry, or empty: 0/1 entries
+  std::int64_t column_count = 0;  ///< the column space's size; 0: rows (the columns are the rows)
 };
 
 /// Per replica, the sums the observables need (coupling_force.hpp): sum_n |y_n| (R = that /

@@ -120,9 +120,14 @@ std::int64_t z_blocks(std::int64_t rows) { return (rows + k_z_block_rows - 1) / 
 
 struct RankOneEnsemble::Impl : EnsembleCells {
   Impl(std::int64_t rows, int replicas, bool diag, int threads)
-      : EnsembleCells(rows, replicas, false, threads), diagonal(diag) {}
+      : EnsembleCells(rows, replicas, false, threads),
+        diagonal(diag),
+        inverse_n(1.0 / static_cast<double>(rows)) {}
   bool diagonal;
+  double inverse_n;  // 1 / N, N over all ranks
   DeviceBuffer<double> a, z_partial, z;
+  RankExchange ranks;          // over ranks: Z's sum over them
+  std::vector<double> host_z;  // its host copy
 
   void evaluate(bool with_terms) override {
     const dim3 grid(static_cast<unsigned>(z_blocks(m_rows)),
@@ -133,10 +138,15 @@ struct RankOneEnsemble::Impl : EnsembleCells {
     z_total_kernel<<<blocks_for(static_cast<std::size_t>(m_replicas), 64), 64>>>(
         z_partial.data(), z_blocks(m_rows), m_replicas, z.data());
     check_launch("Z total kernel");
-    const FieldArgs f{a.data(),    m_cs.data(), z.data(),
-                      m_replicas,  cells(),     1.0 / static_cast<double>(m_rows),
-                      diagonal,    m_g.data(),  with_terms ? m_terms.data() : nullptr,
-                      fields_out()};
+    if (ranks.sum_over_ranks) {
+      // rank_one_force.cpp's reduce_z: this rank's Z, then the sum over ranks.
+      z.download(host_z.data(), host_z.size());
+      ranks.sum_over_ranks(host_z.data(), static_cast<int>(host_z.size()));
+      z.upload(host_z.data(), host_z.size());
+    }
+    const FieldArgs f{a.data(),   m_cs.data(), z.data(),   m_replicas,
+                      cells(),    inverse_n,   diagonal,   m_g.data(),
+                      with_terms ? m_terms.data() : nullptr, fields_out()};
     field_kernel<<<cell_blocks(), tpb()>>>(f);
     check_launch("rank-one field kernel");
   }
@@ -156,8 +166,13 @@ DeviceMemory RankOneEnsemble::memory(std::int64_t rows, int replicas) {
 namespace {
 
 std::unique_ptr<RankOneEnsemble::Impl> rank_one_cells(const std::vector<double>& a, bool diagonal,
-                                                      int replicas, int threads_per_block) {
+                                                      int replicas, RankExchange ranks,
+                                                      int threads_per_block) {
   const auto rows = static_cast<std::int64_t>(a.size());
+  if (ranks.global_rows != 0 && ranks.global_rows < rows) {
+    throw DeviceError("rank-one ensemble: N = " + std::to_string(ranks.global_rows) +
+                      " over all ranks is below this rank's " + std::to_string(rows) + " rows");
+  }
   // z_blocks_kernel's groups of replicas lie on the grid's y, at most 65535 of them.
   if (replicas > 65535 * k_z_group) {
     throw DeviceError("rank-one ensemble: " + std::to_string(replicas) + " replicas, more than " +
@@ -170,6 +185,9 @@ std::unique_ptr<RankOneEnsemble::Impl> rank_one_cells(const std::vector<double>&
   impl->a.upload(a.data(), a.size());
   impl->z_partial.allocate(static_cast<std::size_t>(z_blocks(rows) * 2 * replicas));
   impl->z.allocate(static_cast<std::size_t>(2 * replicas));
+  if (ranks.global_rows > 0) impl->inverse_n = 1.0 / static_cast<double>(ranks.global_rows);
+  if (ranks.sum_over_ranks) impl->host_z.assign(static_cast<std::size_t>(2 * replicas), 0.0);
+  impl->ranks = std::move(ranks);
   impl->allocate();
   return impl;
 }
@@ -178,6 +196,10 @@ std::unique_ptr<RankOneEnsemble::Impl> rank_one_cells(const std::vector<double>&
 
 RankOneEnsemble::RankOneEnsemble(const std::vector<double>& a, bool diagonal, int replicas,
                                  int threads_per_block)
-    : DeviceEnsemble(rank_one_cells(a, diagonal, replicas, threads_per_block)) {}
+    : DeviceEnsemble(rank_one_cells(a, diagonal, replicas, {}, threads_per_block)) {}
+
+RankOneEnsemble::RankOneEnsemble(const std::vector<double>& a, bool diagonal, int replicas,
+                                 RankExchange ranks, int threads_per_block)
+    : DeviceEnsemble(rank_one_cells(a, diagonal, replicas, std::move(ranks), threads_per_block)) {}
 
 }  // namespace hmfnet::cuda

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "dynamics/cuda/device_ensemble.hpp"
+#include "dynamics/cuda/rank_exchange.hpp"
 
 namespace hmfnet::cuda {
 
@@ -24,6 +25,12 @@ class RankOneEnsemble : public DeviceEnsemble {
   /// without self-loops). Throws DeviceError before any allocation when the device memory does
   /// not suffice, and where no device can run this build.
   RankOneEnsemble(const std::vector<double>& a, bool diagonal, int replicas,
+                  int threads_per_block = 256);
+  /// One MPI rank's rows of A = a a^T spread over ranks: `a` holds this rank's rows' a_n, and
+  /// each evaluation sums this rank's Z (its rows' blocks, as rank_one_force.cpp) over the ranks
+  /// with `ranks.sum_over_ranks` (2 x replicas doubles through the host), N from
+  /// `ranks.global_rows`.
+  RankOneEnsemble(const std::vector<double>& a, bool diagonal, int replicas, RankExchange ranks,
                   int threads_per_block = 256);
 
   /// The device memory `rows` rotors and `replicas` lanes need, and what is free.

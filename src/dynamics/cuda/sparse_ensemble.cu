@@ -153,23 +153,65 @@ struct SparseEnsemble::Impl : EnsembleCells {
   Impl(std::int64_t rows, int replicas, DevicePrecision p, int threads)
       : EnsembleCells(rows, replicas, p == DevicePrecision::float32, threads),
         precision(p),
-        threads_per_row(replicas == 1 ? k_row_threads : 1) {}
+        threads_per_row(replicas == 1 ? k_row_threads : 1),
+        inverse_n(1.0 / static_cast<double>(rows)) {}
   std::int64_t entries = 0;
   DevicePrecision precision;
   int threads_per_row;  // 1: force_kernel, k_row_threads: force_kernel_split
+  double inverse_n;     // 1 / N, N over all ranks
   DeviceBuffer<std::int64_t> offsets;
   DeviceBuffer<std::int32_t> columns;
   DeviceBuffer<double> weights64;  // float64 weighted networks
   DeviceBuffer<float> weights32;   // float32 weighted networks (narrowed as on the CPU)
+  // Over ranks: the column space's [cos, sin] (columns x replicas x 2) on the device, in the
+  // table's type, and the host's copies the exchange reads and fills.
+  RankExchange ranks;
+  std::int64_t column_count = 0;
+  DeviceBuffer<double> column64;
+  DeviceBuffer<float> column32;
+  std::vector<double> host_owned, host_columns;
+  std::vector<float> host_columns32;
 
   // The force at the current [cos, sin] (g, and the terms when asked).
   void evaluate(bool with_terms) override {
+    const bool over_ranks = static_cast<bool>(ranks.import_columns);
+    if (over_ranks) import_columns();
     if (precision == DevicePrecision::float64) {
-      launch_force<double>(m_cs.data(), weights64.size() > 0 ? weights64.data() : nullptr,
-                           with_terms);
+      launch_force<double>(over_ranks ? column64.data() : m_cs.data(),
+                           weights64.size() > 0 ? weights64.data() : nullptr, with_terms);
     } else {
-      launch_force<float>(m_cs32.data(), weights32.size() > 0 ? weights32.data() : nullptr,
-                          with_terms);
+      launch_force<float>(over_ranks ? column32.data() : m_cs32.data(),
+                          weights32.size() > 0 ? weights32.data() : nullptr, with_terms);
+    }
+  }
+
+  // network_force.cpp's import: the owned rows' [cos, sin] to the host (the copy waits for the
+  // stage that formed them), the exchange, and the column space back in the table's type (the
+  // float32 table narrowed from the imported doubles, as network_force.cpp narrows it).
+  void import_columns() {
+    m_cs.download(host_owned.data(), host_owned.size());
+    ranks.import_columns(host_owned.data(), 2 * m_replicas, host_columns.data());
+    if (precision == DevicePrecision::float64) {
+      column64.upload(host_columns.data(), host_columns.size());
+      return;
+    }
+    for (std::size_t k = 0; k < host_columns.size(); ++k) {
+      host_columns32[k] = static_cast<float>(host_columns[k]);
+    }
+    column32.upload(host_columns32.data(), host_columns32.size());
+  }
+
+  // The column space's buffers, where the rows are one rank's of several.
+  void allocate_columns() {
+    const auto values = 2 * static_cast<std::size_t>(column_count) *
+                        static_cast<std::size_t>(m_replicas);
+    host_owned.assign(2 * static_cast<std::size_t>(cells()), 0.0);
+    host_columns.assign(values, 0.0);
+    if (precision == DevicePrecision::float64) {
+      column64.allocate(values);
+    } else {
+      host_columns32.assign(values, 0.0F);
+      column32.allocate(values);
     }
   }
 
@@ -178,7 +220,7 @@ struct SparseEnsemble::Impl : EnsembleCells {
     const ForceArgs<T> a{offsets.data(), columns.data(),
                          weights,        table,
                          m_cs.data(),    m_replicas,
-                         cells(),        1.0 / static_cast<double>(m_rows),
+                         cells(),        inverse_n,
                          m_g.data(),     with_terms ? m_terms.data() : nullptr,
                          fields_out()};
     if (threads_per_row == 1) {
@@ -192,13 +234,20 @@ struct SparseEnsemble::Impl : EnsembleCells {
 };
 
 DeviceMemory SparseEnsemble::memory(std::int64_t rows, std::int64_t entries, int replicas,
-                                    DevicePrecision precision, bool weighted) {
+                                    DevicePrecision precision, bool weighted,
+                                    std::int64_t column_count) {
   DeviceMemory m;
-  const std::size_t weight_bytes = !weighted                               ? 0
-                                   : precision == DevicePrecision::float64 ? sizeof(double)
-                                                                           : sizeof(float);
+  const std::size_t value_bytes =
+      precision == DevicePrecision::float64 ? sizeof(double) : sizeof(float);
+  const std::size_t weight_bytes = weighted ? value_bytes : 0;
+  // Over ranks, the column space's table beside the cells' own.
+  const std::size_t column_bytes =
+      column_count > rows ? 2 * static_cast<std::size_t>(column_count) *
+                                static_cast<std::size_t>(replicas) * value_bytes
+                          : 0;
   m.needed = static_cast<std::size_t>(rows + 1) * sizeof(std::int64_t) +
              static_cast<std::size_t>(entries) * (sizeof(std::int32_t) + weight_bytes) +
+             column_bytes +
              EnsembleCells::bytes(rows, replicas, precision == DevicePrecision::float32);
   std::size_t total = 0;
   check(cudaMemGetInfo(&m.free, &total), "cudaMemGetInfo");
@@ -212,7 +261,7 @@ namespace {
 // The network's checks, then the device's, then the ensemble on the device.
 std::unique_ptr<SparseEnsemble::Impl> copied_network(const HostCsr& network, int replicas,
                                                      DevicePrecision precision,
-                                                     int threads_per_block) {
+                                                     RankExchange ranks, int threads_per_block) {
   if (network.offsets.size() != static_cast<std::size_t>(network.rows + 1) ||
       network.offsets.front() != 0 ||
       network.offsets.back() != static_cast<std::int64_t>(network.columns.size())) {
@@ -221,10 +270,25 @@ std::unique_ptr<SparseEnsemble::Impl> copied_network(const HostCsr& network, int
   if (!std::is_sorted(network.offsets.begin(), network.offsets.end())) {
     throw DeviceError("device ensemble: the CSR offsets decrease");
   }
+  const bool over_ranks = static_cast<bool>(ranks.import_columns);
+  const std::int64_t column_count = network.column_count > 0 ? network.column_count : network.rows;
+  if (!over_ranks && column_count != network.rows) {
+    throw DeviceError("device ensemble: a column space of " + std::to_string(column_count) +
+                      " for " + std::to_string(network.rows) +
+                      " rows needs the ranks' column import");
+  }
+  if (column_count > INT32_MAX) {
+    throw DeviceError("device ensemble: a column space of more than 2^31 - 1 columns");
+  }
+  if (ranks.global_rows != 0 && ranks.global_rows < network.rows) {
+    throw DeviceError("device ensemble: N = " + std::to_string(ranks.global_rows) +
+                      " over all ranks is below this rank's " + std::to_string(network.rows) +
+                      " rows");
+  }
   for (const std::int32_t c : network.columns) {
-    if (c < 0 || c >= network.rows) {
+    if (c < 0 || c >= column_count) {
       throw DeviceError("device ensemble: column " + std::to_string(c) + " outside [0, " +
-                        std::to_string(network.rows) + ")");
+                        std::to_string(column_count) + ")");
     }
   }
   require_device();
@@ -233,12 +297,14 @@ std::unique_ptr<SparseEnsemble::Impl> copied_network(const HostCsr& network, int
   if (weighted && network.weights.size() != network.columns.size()) {
     throw DeviceError("device ensemble: one weight per column entry");
   }
-  require_memory(
-      SparseEnsemble::memory(network.rows, entries, replicas, precision, weighted).needed,
-      "the network's ensemble");
+  require_memory(SparseEnsemble::memory(network.rows, entries, replicas, precision, weighted,
+                                        over_ranks ? column_count : 0)
+                     .needed,
+                 "the network's ensemble");
   auto e =
       std::make_unique<SparseEnsemble::Impl>(network.rows, replicas, precision, threads_per_block);
   e->entries = entries;
+  if (ranks.global_rows > 0) e->inverse_n = 1.0 / static_cast<double>(ranks.global_rows);
   e->offsets.upload(network.offsets.data(), network.offsets.size());
   e->columns.upload(network.columns.data(), network.columns.size());
   if (weighted && precision == DevicePrecision::float64) {
@@ -249,6 +315,11 @@ std::unique_ptr<SparseEnsemble::Impl> copied_network(const HostCsr& network, int
       narrow[k] = static_cast<float>(network.weights[k]);
     e->weights32.upload(narrow.data(), narrow.size());
   }
+  if (over_ranks) {
+    e->column_count = column_count;
+    e->ranks = std::move(ranks);
+    e->allocate_columns();
+  }
   e->allocate();
   return e;
 }
@@ -257,7 +328,12 @@ std::unique_ptr<SparseEnsemble::Impl> copied_network(const HostCsr& network, int
 
 SparseEnsemble::SparseEnsemble(const HostCsr& network, int replicas, DevicePrecision precision,
                                int threads_per_block)
-    : SparseEnsemble(copied_network(network, replicas, precision, threads_per_block)) {}
+    : SparseEnsemble(copied_network(network, replicas, precision, {}, threads_per_block)) {}
+
+SparseEnsemble::SparseEnsemble(const HostCsr& network, int replicas, DevicePrecision precision,
+                               RankExchange ranks, int threads_per_block)
+    : SparseEnsemble(
+          copied_network(network, replicas, precision, std::move(ranks), threads_per_block)) {}
 
 SparseEnsemble SparseEnsemble::directed_er(std::int64_t rows, double degree, std::uint64_t seed,
                                            int replicas, DevicePrecision precision,

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "dynamics/cuda/device_ensemble.hpp"
+#include "dynamics/cuda/rank_exchange.hpp"
 
 namespace hmfnet::cuda {
 
@@ -21,6 +22,13 @@ class SparseEnsemble : public DeviceEnsemble {
   /// threads_per_block: of every cell kernel (the results do not depend on it).
   SparseEnsemble(const HostCsr& network, int replicas, DevicePrecision precision,
                  int threads_per_block = 256);
+  /// One MPI rank's rows of a network spread over ranks: `network` holds this rank's rows over
+  /// its column space (HostCsr::column_count), whose values `ranks.import_columns` fills at
+  /// each evaluation from the owned rows' [cos, sin] (copied to the host and the column space
+  /// back: 16 B x replicas x (rows + column_count) a drift in float64; docs/scaling.md). Every
+  /// row's sum is the one-rank sum, so the state's bits do not depend on the rank count.
+  SparseEnsemble(const HostCsr& network, int replicas, DevicePrecision precision,
+                 RankExchange ranks, int threads_per_block = 256);
   /// A network generated on the device: the directed Erdos-Renyi graph G(N, p = degree / N)
   /// (each ordered pair, self-pairs included, an edge with probability p, independently;
   /// columns sorted), drawn from `seed` by a counter-based generator per row. For benchmarks of
@@ -30,8 +38,10 @@ class SparseEnsemble : public DeviceEnsemble {
                                     int threads_per_block = 256);
 
   /// The memory a network of `rows` rows, `entries` stored entries and `replicas` lanes needs.
+  /// `column_count` above rows: the column space of one rank's rows over ranks.
   static DeviceMemory memory(std::int64_t rows, std::int64_t entries, int replicas,
-                             DevicePrecision precision, bool weighted = false);
+                             DevicePrecision precision, bool weighted = false,
+                             std::int64_t column_count = 0);
 
   std::int64_t entries() const;
   /// Threads summing one cell's row: 1, or 4 (each a quarter of the row's entries, combined in
