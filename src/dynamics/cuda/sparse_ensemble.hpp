@@ -25,8 +25,8 @@ class SparseEnsemble : public DeviceEnsemble {
   /// One MPI rank's rows of a network spread over ranks: `network` holds this rank's rows over
   /// its column space (HostCsr::column_count), whose values `ranks.import_columns` fills at
   /// each evaluation from the owned rows' [cos, sin] (copied to the host and the column space
-  /// back: 16 B x replicas x (rows + column_count) a drift in float64; docs/scaling.md). Every
-  /// row's sum is the one-rank sum, so the state's bits do not depend on the rank count.
+  /// back: 16 B x replicas x (rows + column_count) an evaluation in float64; docs/scaling.md).
+  /// Each row is summed in the column space's order, as network_force.cpp sums it.
   SparseEnsemble(const HostCsr& network, int replicas, DevicePrecision precision,
                  RankExchange ranks, int threads_per_block = 256);
   /// A network generated on the device: the directed Erdos-Renyi graph G(N, p = degree / N)
