@@ -4,7 +4,8 @@
 // computed by the functions of dynamics/kernel_arithmetic.hpp in the CPU's order
 // (tests/dynamics/test_kernel_arithmetic.cpp ties these functions to the CPU kernels). The
 // device steppers are compared with it; it needs no Trilinos, so the device check's own build
-// (ci/device) has it.
+// (ci/device) has it. Spread over ranks (spread_over), it sums as each of several MPI ranks
+// would: the observables over each rank's rows, Z per rank and then over the ranks.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -101,6 +102,13 @@ class HostEnsemble {
 
   std::vector<double> theta, p, K;
 
+  /// The rows as consecutive blocks of `rank_rows[r]` rows, one a rank (they add up to N): the
+  /// order sums of `advance` and `rank_sums` are each rank's, over its rows in its own 2048-row
+  /// blocks, and the rank-one Z is each rank's so summed and then the ranks' added in rank order
+  /// (rank_one_force.cpp's reduce_z: ParallelSession::sum_in_place, whose two addends give the
+  /// same bits in either order). A sparse row's sum does not depend on it.
+  void spread_over(std::vector<std::int64_t> rank_rows) { m_rank_rows = std::move(rank_rows); }
+
   void set_state(std::vector<double> t, std::vector<double> q) {
     theta = std::move(t);
     p = std::move(q);
@@ -108,7 +116,8 @@ class HostEnsemble {
     evaluate();
   }
 
-  /// With `order`: each step's sum_n |y_n| per replica appended (SparseEnsemble::advance).
+  /// With `order`: each step's sum_n |y_n| per replica appended (SparseEnsemble::advance), one
+  /// such sum a rank where spread over ranks (steps x ranks x replicas values).
   void advance(const SplittingCoefficients& c, double h, std::int64_t steps,
                std::vector<double>* order = nullptr) {
     for (std::int64_t s = 0; s < steps; ++s) {
@@ -123,28 +132,21 @@ class HostEnsemble {
         p[k] = kicked_momentum(p[k], c.kicks.back() * h, K[k % m_w], m_g[k]);
       }
       if (order != nullptr) {
-        const std::vector<double> o = ordered_sums(order_terms());
-        order->insert(order->end(), o.begin(), o.end());
+        const std::vector<double> terms = order_terms();
+        for (std::size_t r = 0; r < rank_count(); ++r) {
+          const std::vector<double> o = ordered_sums(terms, first_row(r), first_row(r + 1));
+          order->insert(order->end(), o.begin(), o.end());
+        }
       }
     }
   }
 
   /// The record's sums at the current state in OrderedColumnSums' order (the CPU's
-  /// HostStepper::sums and SparseEnsemble::sums).
-  cuda::EnsembleSums sums() const {
-    std::vector<double> coupling(cells()), kinetic(cells()), magnitude(cells());
-    for (std::size_t k = 0; k < cells(); ++k) {
-      coupling[k] = coupling_term(m_cs[2 * k], m_cs[2 * k + 1], m_y[k]);
-      kinetic[k] = 0.5 * p[k] * p[k];
-      magnitude[k] = std::abs(p[k]);
-    }
-    cuda::EnsembleSums s;
-    s.order = ordered_sums(order_terms());
-    s.coupling = ordered_sums(coupling);
-    s.kinetic = ordered_sums(kinetic);
-    s.momentum = ordered_sums(p);
-    s.momentum_scale = ordered_sums(magnitude);
-    return s;
+  /// HostStepper::sums and SparseEnsemble::sums), over every row.
+  cuda::EnsembleSums sums() const { return sums_over(0, m_n); }
+  /// The same over rank `rank`'s rows, where spread over ranks (each rank's SparseEnsemble::sums).
+  cuda::EnsembleSums rank_sums(std::size_t rank) const {
+    return sums_over(first_row(rank), first_row(rank + 1));
   }
 
   /// Per replica H = sum p^2 / 2 - K / (2N) sum Re(e^{-i theta_n} y_n), summed plainly.
@@ -173,19 +175,47 @@ class HostEnsemble {
  private:
   std::size_t cells() const { return static_cast<std::size_t>(m_n) * m_w; }
 
+  // The five sums over rows [first, last) (one rank's), each from 0 in that range's blocks.
+  cuda::EnsembleSums sums_over(std::int64_t first, std::int64_t last) const {
+    std::vector<double> coupling(cells()), kinetic(cells()), magnitude(cells());
+    for (std::size_t k = 0; k < cells(); ++k) {
+      coupling[k] = coupling_term(m_cs[2 * k], m_cs[2 * k + 1], m_y[k]);
+      kinetic[k] = 0.5 * p[k] * p[k];
+      magnitude[k] = std::abs(p[k]);
+    }
+    cuda::EnsembleSums s;
+    s.order = ordered_sums(order_terms(), first, last);
+    s.coupling = ordered_sums(coupling, first, last);
+    s.kinetic = ordered_sums(kinetic, first, last);
+    s.momentum = ordered_sums(p, first, last);
+    s.momentum_scale = ordered_sums(magnitude, first, last);
+    return s;
+  }
+
+  std::size_t rank_count() const { return m_rank_rows.empty() ? 1 : m_rank_rows.size(); }
+  // Rank r's first row; rank_count()'s is N.
+  std::int64_t first_row(std::size_t rank) const {
+    if (m_rank_rows.empty()) return rank == 0 ? 0 : m_n;
+    std::int64_t first = 0;
+    for (std::size_t r = 0; r < rank; ++r) first += m_rank_rows[r];
+    return first;
+  }
+
   std::vector<double> order_terms() const {
     std::vector<double> t(cells());
     for (std::size_t k = 0; k < cells(); ++k) t[k] = order_term(m_y[k]);
     return t;
   }
 
-  // Column sums of rows x replicas values as OrderedColumnSums forms them: 2048-row blocks each
-  // from 0 in order, then the blocks in order from 0.
-  std::vector<double> ordered_sums(const std::vector<double>& values) const {
+  // Column sums of rows [begin, end) of rows x replicas values as OrderedColumnSums forms them
+  // on the rank that holds those rows: 2048-row blocks from `begin`, each from 0 in order, then
+  // the blocks in order from 0.
+  std::vector<double> ordered_sums(const std::vector<double>& values, std::int64_t begin,
+                                   std::int64_t end) const {
     std::vector<double> out(m_w, 0.0);
-    for (std::int64_t first = 0; first < m_n; first += 2048) {
+    for (std::int64_t first = begin; first < end; first += 2048) {
       std::vector<double> block(m_w, 0.0);
-      for (std::int64_t r = first; r < std::min(m_n, first + 2048); ++r) {
+      for (std::int64_t r = first; r < std::min(end, first + 2048); ++r) {
         for (std::size_t b = 0; b < m_w; ++b)
           block[b] += values[static_cast<std::size_t>(r) * m_w + b];
       }
@@ -223,21 +253,17 @@ class HostEnsemble {
     }
   }
 
-  // rank_one_force.cpp: Z = sum_m a_m e^{i theta_m} by 2048-row blocks, each from 0 in order,
-  // the blocks in order from 0 (OrderedColumnSums), then y_n = a_n Z - [no diagonal]
-  // a_n^2 e^{i theta_n}.
+  // rank_one_force.cpp: Z = sum_m a_m e^{i theta_m} by 2048-row blocks of each rank's rows,
+  // each from 0 in order, the blocks in order from 0 (OrderedColumnSums), the ranks' Z added in
+  // rank order (spread_over), then y_n = a_n Z - [no diagonal] a_n^2 e^{i theta_n}.
   void complete_fields() {
-    m_z.assign(2 * m_w, 0.0);
-    for (std::int64_t first = 0; first < m_n; first += 2048) {
-      std::vector<double> block(2 * m_w, 0.0);
-      for (std::int64_t r = first; r < std::min(m_n, first + 2048); ++r) {
-        for (std::size_t b = 0; b < m_w; ++b) {
-          const std::size_t k = static_cast<std::size_t>(r) * m_w + b;
-          block[2 * b] += m_a[static_cast<std::size_t>(r)] * m_cs[2 * k];
-          block[2 * b + 1] += m_a[static_cast<std::size_t>(r)] * m_cs[2 * k + 1];
-        }
+    for (std::size_t rank = 0; rank < rank_count(); ++rank) {
+      const std::vector<double> z = rank_z(first_row(rank), first_row(rank + 1));
+      if (rank == 0) {
+        m_z = z;
+      } else {
+        for (std::size_t j = 0; j < z.size(); ++j) m_z[j] += z[j];
       }
-      for (std::size_t j = 0; j < block.size(); ++j) m_z[j] += block[j];
     }
     for (std::size_t k = 0; k < cells(); ++k) {
       const std::size_t b = k % m_w;
@@ -247,6 +273,23 @@ class HostEnsemble {
     }
   }
 
+  // One rank's Z over rows [begin, end), [Re, Im] per replica.
+  std::vector<double> rank_z(std::int64_t begin, std::int64_t end) const {
+    std::vector<double> z(2 * m_w, 0.0);
+    for (std::int64_t first = begin; first < end; first += 2048) {
+      std::vector<double> block(2 * m_w, 0.0);
+      for (std::int64_t r = first; r < std::min(end, first + 2048); ++r) {
+        for (std::size_t b = 0; b < m_w; ++b) {
+          const std::size_t k = static_cast<std::size_t>(r) * m_w + b;
+          block[2 * b] += m_a[static_cast<std::size_t>(r)] * m_cs[2 * k];
+          block[2 * b + 1] += m_a[static_cast<std::size_t>(r)] * m_cs[2 * k + 1];
+        }
+      }
+      for (std::size_t j = 0; j < block.size(); ++j) z[j] += block[j];
+    }
+    return z;
+  }
+
   cuda::HostCsr m_net;
   std::int64_t m_n;
   int m_b;
@@ -254,7 +297,8 @@ class HostEnsemble {
   bool m_float32;
   bool m_complete = false;
   bool m_self_loops = true;
-  std::vector<double> m_a;  // rank-one: a_n
+  std::vector<double> m_a;                // rank-one: a_n
+  std::vector<std::int64_t> m_rank_rows;  // spread_over's rows a rank; empty: one rank
   std::vector<double> m_cs, m_g, m_z;
   std::vector<float> m_cs32;
   std::vector<float> m_weights32;  // the weights narrowed as network_force.cpp narrows them

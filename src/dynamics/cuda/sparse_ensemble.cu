@@ -150,8 +150,10 @@ __global__ void er_fill_kernel(std::uint64_t seed, std::int64_t n, double log_q,
 }  // namespace
 
 struct SparseEnsemble::Impl : EnsembleCells {
-  Impl(std::int64_t rows, int replicas, DevicePrecision p, int threads)
-      : EnsembleCells(rows, replicas, p == DevicePrecision::float32, threads),
+  // Over ranks the float32 force reads the column space's table, narrowed on the host: the
+  // cells keep no float32 table of their own (one 8-byte write a cell and stage less).
+  Impl(std::int64_t rows, int replicas, DevicePrecision p, bool over_ranks, int threads)
+      : EnsembleCells(rows, replicas, p == DevicePrecision::float32 && !over_ranks, threads),
         precision(p),
         threads_per_row(replicas == 1 ? k_row_threads : 1),
         inverse_n(1.0 / static_cast<double>(rows)) {}
@@ -203,8 +205,8 @@ struct SparseEnsemble::Impl : EnsembleCells {
 
   // The column space's buffers, where the rows are one rank's of several.
   void allocate_columns() {
-    const auto values = 2 * static_cast<std::size_t>(column_count) *
-                        static_cast<std::size_t>(m_replicas);
+    const auto values =
+        2 * static_cast<std::size_t>(column_count) * static_cast<std::size_t>(m_replicas);
     host_owned.assign(2 * static_cast<std::size_t>(cells()), 0.0);
     host_columns.assign(values, 0.0);
     if (precision == DevicePrecision::float64) {
@@ -240,15 +242,15 @@ DeviceMemory SparseEnsemble::memory(std::int64_t rows, std::int64_t entries, int
   const std::size_t value_bytes =
       precision == DevicePrecision::float64 ? sizeof(double) : sizeof(float);
   const std::size_t weight_bytes = weighted ? value_bytes : 0;
-  // Over ranks, the column space's table beside the cells' own.
-  const std::size_t column_bytes =
-      column_count > rows ? 2 * static_cast<std::size_t>(column_count) *
-                                static_cast<std::size_t>(replicas) * value_bytes
-                          : 0;
-  m.needed = static_cast<std::size_t>(rows + 1) * sizeof(std::int64_t) +
-             static_cast<std::size_t>(entries) * (sizeof(std::int32_t) + weight_bytes) +
-             column_bytes +
-             EnsembleCells::bytes(rows, replicas, precision == DevicePrecision::float32);
+  // Over ranks, the column space's table in the table's type instead of the cells' float32 one.
+  const bool over_ranks = column_count > 0;
+  const std::size_t column_bytes = over_ranks ? 2 * static_cast<std::size_t>(column_count) *
+                                                    static_cast<std::size_t>(replicas) * value_bytes
+                                              : 0;
+  m.needed =
+      static_cast<std::size_t>(rows + 1) * sizeof(std::int64_t) +
+      static_cast<std::size_t>(entries) * (sizeof(std::int32_t) + weight_bytes) + column_bytes +
+      EnsembleCells::bytes(rows, replicas, precision == DevicePrecision::float32 && !over_ranks);
   std::size_t total = 0;
   check(cudaMemGetInfo(&m.free, &total), "cudaMemGetInfo");
   return m;
@@ -260,8 +262,8 @@ namespace {
 
 // The network's checks, then the device's, then the ensemble on the device.
 std::unique_ptr<SparseEnsemble::Impl> copied_network(const HostCsr& network, int replicas,
-                                                     DevicePrecision precision,
-                                                     RankExchange ranks, int threads_per_block) {
+                                                     DevicePrecision precision, RankExchange ranks,
+                                                     int threads_per_block) {
   if (network.offsets.size() != static_cast<std::size_t>(network.rows + 1) ||
       network.offsets.front() != 0 ||
       network.offsets.back() != static_cast<std::int64_t>(network.columns.size())) {
@@ -301,8 +303,8 @@ std::unique_ptr<SparseEnsemble::Impl> copied_network(const HostCsr& network, int
                                         over_ranks ? column_count : 0)
                      .needed,
                  "the network's ensemble");
-  auto e =
-      std::make_unique<SparseEnsemble::Impl>(network.rows, replicas, precision, threads_per_block);
+  auto e = std::make_unique<SparseEnsemble::Impl>(network.rows, replicas, precision, over_ranks,
+                                                  threads_per_block);
   e->entries = entries;
   if (ranks.global_rows > 0) e->inverse_n = 1.0 / static_cast<double>(ranks.global_rows);
   e->offsets.upload(network.offsets.data(), network.offsets.size());
@@ -338,7 +340,7 @@ SparseEnsemble::SparseEnsemble(const HostCsr& network, int replicas, DevicePreci
 SparseEnsemble SparseEnsemble::directed_er(std::int64_t rows, double degree, std::uint64_t seed,
                                            int replicas, DevicePrecision precision,
                                            int threads_per_block) {
-  auto impl = std::make_unique<Impl>(rows, replicas, precision, threads_per_block);
+  auto impl = std::make_unique<Impl>(rows, replicas, precision, false, threads_per_block);
   const double p = degree / static_cast<double>(rows);
   if (!(p > 0.0) || !(p < 1.0)) {
     throw DeviceError("directed ER: degree / rows must lie in (0, 1)");

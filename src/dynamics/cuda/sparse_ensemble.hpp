@@ -38,7 +38,7 @@ class SparseEnsemble : public DeviceEnsemble {
                                     int threads_per_block = 256);
 
   /// The memory a network of `rows` rows, `entries` stored entries and `replicas` lanes needs.
-  /// `column_count` above rows: the column space of one rank's rows over ranks.
+  /// `column_count` above 0: one rank's rows over ranks, with a column space of that size.
   static DeviceMemory memory(std::int64_t rows, std::int64_t entries, int replicas,
                              DevicePrecision precision, bool weighted = false,
                              std::int64_t column_count = 0);
