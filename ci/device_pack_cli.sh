@@ -2,11 +2,13 @@
 # Packs the `hmfnet` CLI built here for the GPU machine, which has no Trilinos, HDF5 or Open MPI:
 # the executable, the shared libraries it loads (ldd, less glibc's and the NVIDIA driver's, which
 # the GPU machine has), and Open MPI's plugins and help files under a relocated prefix
-# (OPAL_PREFIX), so that `hmfnet simulate --device cuda` runs there as one MPI singleton.
+# (OPAL_PREFIX), so that `hmfnet simulate --device cuda` runs there as one MPI singleton, and
+# Open MPI's launcher (orterun, orted) for runs of several ranks on that one machine.
 #
 #   bash ci/device_pack_cli.sh BUILD/bin/hmfnet OUT.tar.xz
 #
-# Unpacked into D, it runs as `D/run hmfnet ARGS...` (the wrapper sets the environment).
+# Unpacked into D, it runs as `D/run hmfnet ARGS...` (one rank) or `D/mpirun NP hmfnet ARGS...`
+# (NP ranks on this machine); the wrappers set the environment.
 set -euo pipefail
 exe=$1 pack=$2
 die() { echo "device_pack_cli: $*" >&2; exit 1; }
@@ -39,10 +41,16 @@ plugins=/usr/lib/$multiarch/openmpi/lib/openmpi3
 prefix="$stage/prefix"
 mkdir -p "$prefix/lib/$multiarch/openmpi/lib" "$prefix/share" "$prefix/etc"
 cp -a "$plugins" "$prefix/lib/$multiarch/openmpi/lib/"
-for p in "$plugins"/mca_*.so; do
-  case $(basename "$p") in mca_pml_ob1.so | mca_btl_self.so | mca_btl_vader.so) copy_deps "$p" ;; esac
-done
+# The launcher opens its own plugins (ess, plm, odls, pmix, oob, rmaps, ...): every plugin's
+# libraries are packed, so that none the launcher needs fails to load for want of one.
+for p in "$plugins"/mca_*.so; do copy_deps "$p"; done
 [ -d /usr/share/openmpi ] && cp -a /usr/share/openmpi "$prefix/share/"
+launcher=$(readlink -f "$(command -v mpirun)")
+[ "$(basename "$launcher")" = orterun ] || die "mpirun is $launcher, not Open MPI's orterun"
+cp "$launcher" "$stage/bin/mpirun"
+cp "$(dirname "$launcher")/orted" "$stage/bin/orted"
+copy_deps "$stage/bin/mpirun"
+copy_deps "$stage/bin/orted"
 
 cat >"$stage/run" <<'SH'
 #!/usr/bin/env bash
@@ -61,10 +69,29 @@ exec "$here/bin/$program" "$@"
 SH
 chmod +x "$stage/run"
 
+cat >"$stage/mpirun" <<'SH'
+#!/usr/bin/env bash
+# D/mpirun NP PROGRAM ARGS...: NP ranks of D/bin/PROGRAM on this machine, launched by D's own
+# orterun with D's libraries and relocated Open MPI; shared memory between the ranks (vader),
+# TCP where that is refused, as root too.
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+ranks=$1 program=$2
+shift 2
+export LD_LIBRARY_PATH="$here/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+export OPAL_PREFIX="$here/prefix"
+export PATH="$here/bin:$PATH"
+export OMPI_MCA_mca_base_component_show_load_errors=0
+export OMPI_MCA_pml=ob1 OMPI_MCA_btl=self,vader,tcp
+export OMPI_MCA_rmaps_base_oversubscribe=1
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+exec "$here/bin/mpirun" -np "$ranks" -x LD_LIBRARY_PATH -x OPAL_PREFIX "$here/bin/$program" "$@"
+SH
+chmod +x "$stage/mpirun"
+
 # Every library the executable loads must resolve into the pack or to the system's own C library.
-unresolved=$(LD_LIBRARY_PATH="$stage/lib" ldd "$stage/bin/hmfnet" |
+unresolved=$(for b in hmfnet mpirun orted; do LD_LIBRARY_PATH="$stage/lib" ldd "$stage/bin/$b"; done |
   awk -v lib="$stage/lib/" '$2 == "=>" && index($3, lib) != 1 { print $1 " -> " $3 }' |
-  grep -Ev "$system_lib" || true)
+  grep -Ev "$system_lib" | sort -u || true)
 [ -z "$unresolved" ] || die "libraries that resolve outside the pack: $unresolved"
 # The newest glibc symbol version any packed binary needs: the GPU machine's glibc must have it.
 glibc=$(find "$stage/bin" "$stage/lib" -type f -exec objdump -T {} + 2>/dev/null |

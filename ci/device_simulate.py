@@ -10,7 +10,10 @@ with the CLI that ci/device_pack_cli.sh packed on the CPU machine:
   2. --node-data on both forces: the results files' datasets (node data included) equal;
   3. a checkpoint written by one device and resumed on the other (SIGTERM once the checkpoint of
      the second K exists, then --resume): the points of the uninterrupted run, both ways;
-  4. the rate of both on one larger network (stored entries x replicas x steps / s), and the
+  4. two MPI ranks sharing the one device (the packed launcher, D/mpirun): the points of two
+     CPU ranks, on the ER network (sparse force, the ghosts through the host) and on K_N
+     (rank-one force, Z summed over the ranks), and the run's note that the ranks share it;
+  5. the rate of both on one larger network (stored entries x replicas x steps / s), and the
      device's name and the CPU threads beside it.
 
 Prints one line per case (a case whose command fails is a failed case, with its error) and a
@@ -197,6 +200,29 @@ def rates():
          f"{gpu['nnz_steps_per_second'] / 1e9:.3f} G/s: {ratio:.1f}x")
 
 
+def two_ranks(name, network, extra):
+    """`mpirun -np 2` with --device cuda against --device cpu at 2 ranks: the same points."""
+    def body():
+        runs = {}
+        for d in ("cpu", device):
+            done = subprocess.run([os.path.join(cli, "mpirun"), "2", "hmfnet", "simulate", network,
+                                   *extra, "--device", d, "--json", "--quiet"],
+                                  capture_output=True, text=True)
+            if done.returncode != 0:
+                raise RuntimeError(f"2 ranks, --device {d}: exit {done.returncode}: "
+                                   f"{done.stderr.strip()[:300]}")
+            runs[d] = (json.loads(done.stdout), done.stderr)
+        (cpu, _), (gpu, err) = runs["cpu"], runs[device]
+        shared = device == "cpu" or "2 MPI ranks share 1 CUDA device" in err
+        case(name, same_run(cpu, gpu) and cpu["ranks"] == 2 and shared,
+             f"device {gpu['device']!r}, note {'seen' if shared else 'missing'}")
+    guarded(name, body)
+
+
+two_ranks(f"ER over 2 ranks: {device} = cpu", net, base[1:] + ["--precision", "float32"])
+two_ranks(f"K_N over 2 ranks: {device} = cpu", os.path.join(work, "k13.h5"),
+          ["--K-over-Kc", "1.5", "--h", "0.1", "--T", "20", "--transient", "5", "--seed", "2",
+           "--replicas", "5", "--momenta", "waterbag"])
 guarded("rate ER <d>=100 B=8", rates)
 print(f"simulate: {cases} cases, {len(failures)} failed" +
       (f" ({', '.join(failures)})" if failures else ""))
