@@ -12,7 +12,8 @@
 # /tmp/hmfnet-device-build), HMFNET_DEVICE_BUDGET_S (seconds for the whole check, 450: each step's
 # time limit is cut to what is left of it, so the table is printed inside an 8-minute call);
 # the campaign's HMFNET_QSS_SIZES, HMFNET_QSS_LIVES (3), HMFNET_QSS_LIMIT_S (its share, 260 s),
-# HMFNET_QSS_BATCH (rotors a thread loads together: 1, 4 or 8, the same bits) and
+# HMFNET_QSS_BATCH (rotors a thread loads together: 1, 4 or 8, the same bits), HMFNET_QSS_STATE
+# (global or shared: where a launch keeps the state, the same bits) and
 # HMFNET_QSS_RESUME (a qss_gpu_resume.bin to go on from: an earlier call's stays at
 # $build/qss/ on a warm machine); HMFNET_DEVICE_CHECKS (the checks to run, space-separated
 # names from the list `checks` below, all of them when unset: a second call on a warm machine
@@ -192,6 +193,7 @@ check_qss() {
   bounded "$limit" "$log" "$bin_dir/hmfnet_gpu_qss_lifetime" \
     --sizes "${HMFNET_QSS_SIZES:-20000,10000,5000,2000,1600,1000}" --replicas 32 \
     --lives "${HMFNET_QSS_LIVES:-3}" --batch "${HMFNET_QSS_BATCH:-4}" \
+    --state "${HMFNET_QSS_STATE:-global}" \
     --budget-s "$budget" --out "$dir" "${resume[@]}" || rc=$?
   for f in qss_gpu.json qss_gpu.f64; do [ ! -f "$dir/$f" ] || cp "$dir/$f" "$OUT/"; done
   [ ! -f "$dir/qss_gpu_resume.bin" ] || echo "resume file: $dir/qss_gpu_resume.bin" >>"$log"
@@ -204,24 +206,29 @@ check_qss() {
 
 # shellcheck disable=SC2317  # called through the list checks
 # The campaign's resume (qss_resume_file.hpp): N = 1000 stopped after 3 launches and resumed
-# from its qss_gpu_resume.bin must write the records of the same run uninterrupted, bit for bit.
+# from its qss_gpu_resume.bin must write the records of the same run uninterrupted, bit for bit;
+# resumed with the state in shared memory (--state shared) too.
 check_qss_resume() {
   local log="$OUT/runs.log" rc=0 t0=$EPOCHREALTIME dir="$build/qss-resume"
   local run=("$bin_dir/hmfnet_gpu_qss_lifetime" --sizes 1000 --replicas 8 --lives 0.3 --chunk 2000)
-  rm -rf "$dir" && mkdir -p "$dir/whole" "$dir/first" "$dir/rest"
+  rm -rf "$dir" && mkdir -p "$dir/whole" "$dir/first" "$dir/rest" "$dir/shared"
   echo "== QSS resume: N = 1000, 8 replicas, stopped after 3 launches, resumed" >>"$log"
   bounded "$(limit_for 30)" "$log" "${run[@]}" --out "$dir/whole" || rc=$?
   [ "$rc" -ne 0 ] || bounded "$(limit_for 30)" "$log" "${run[@]}" --chunks 3 --out "$dir/first" || rc=$?
   [ "$rc" -ne 0 ] || bounded "$(limit_for 30)" "$log" "${run[@]}" \
     --resume "$dir/first/qss_gpu_resume.bin" --out "$dir/rest" || rc=$?
+  [ "$rc" -ne 0 ] || bounded "$(limit_for 30)" "$log" "${run[@]}" --state shared \
+    --resume "$dir/first/qss_gpu_resume.bin" --out "$dir/shared" || rc=$?
   if [ "$rc" -eq 77 ]; then
     record "QSS resume" skip "$(elapsed_since "$t0")" "no device"
   elif [ "$rc" -ne 0 ]; then
     record "QSS resume" fail "$(elapsed_since "$t0")" "$(exit_text "$rc"), see runs.log"
   elif [ -f "$dir/rest/qss_gpu_resume.bin" ] || [ ! -f "$dir/first/qss_gpu_resume.bin" ]; then
     record "QSS resume" fail "$(elapsed_since "$t0")" "resume file where none belongs, or none where one does"
+  elif ! cmp "$dir/whole/qss_gpu.f64" "$dir/shared/qss_gpu.f64" >>"$log" 2>&1; then
+    record "QSS resume" fail "$(elapsed_since "$t0")" "records resumed in shared memory differ from the uninterrupted run's"
   elif cmp "$dir/whole/qss_gpu.f64" "$dir/rest/qss_gpu.f64" >>"$log" 2>&1; then
-    record "QSS resume" pass "$(elapsed_since "$t0")" "records equal to the uninterrupted run's"
+    record "QSS resume" pass "$(elapsed_since "$t0")" "records equal to the uninterrupted run's (global and shared)"
   else
     record "QSS resume" fail "$(elapsed_since "$t0")" "records differ from the uninterrupted run's"
   fi

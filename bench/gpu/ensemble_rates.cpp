@@ -138,10 +138,18 @@ Row sparse_row(const Ceilings& c, std::int64_t n, int replicas, cuda::DevicePrec
 
 // threads: per block; with few replicas, 256 lets a replica's 2048 tiles spread over a cluster of
 // 8 blocks (one tile a thread), 512 over 4 (complete_graph_ensembles.cu: automatic_cluster).
+// place: where the state is kept (complete_graph_ensembles.hpp). The bound: the sincos of every
+// rotor and stage (twice where the shared-memory stepper forms the [cos, sin] again) on the
+// multiprocessors the replicas' blocks occupy; the model of the global stepper: its 64 bytes a
+// rotor and step (theta, p, [cos, sin] read and written) at the copy bandwidth, which an L2 that
+// holds the state may beat, so a model, not a bound.
 Row complete_row(const Ceilings& c, std::int64_t n, int replicas, std::int64_t steps,
-                 int threads = 512, int batch = 0) {
+                 int threads = 512, int batch = 0,
+                 cuda::StatePlace place = cuda::StatePlace::global_memory) {
   cuda::CompleteGraphEnsembles e({{n, replicas, 1.0, steps * 10, 0}}, threads);
   if (batch > 0) e.set_batch(batch);
+  e.set_state_place(place);
+  const bool shared = place == cuda::StatePlace::shared_memory;
   const auto cells = static_cast<std::size_t>(n) * static_cast<std::size_t>(replicas);
   std::vector<double> theta, p;
   random_state(cells, theta, p);
@@ -152,7 +160,8 @@ Row complete_row(const Ceilings& c, std::int64_t n, int replicas, std::int64_t s
     e.synchronize();
   });
   Row r;
-  r.kind = "complete graph t" + std::to_string(threads) + " b" + std::to_string(e.batch());
+  r.kind = std::string(shared ? "cg shared" : "complete graph") + " t" + std::to_string(threads) +
+           " b" + std::to_string(e.batch());
   r.precision = "float64";
   r.n = n;
   r.replicas = replicas;
@@ -161,9 +170,15 @@ Row complete_row(const Ceilings& c, std::int64_t n, int replicas, std::int64_t s
   r.memory_mb = static_cast<double>(cells) * 32.0 / 1e6;
   const int blocks = replicas * e.cluster_blocks();
   const double share = std::min(1.0, static_cast<double>(blocks) / c.sms);
-  r.bound = c.sincos * share;
-  r.limit = "sincos on " + std::to_string(std::min(blocks, c.sms)) + " of " +
-            std::to_string(c.sms) + " SMs (" + std::to_string(e.cluster_blocks()) + " a replica)";
+  const double sincos_per_rotor = shared && !e.keeps_phases() ? 2.0 : 1.0;
+  r.bound = c.sincos * share / sincos_per_rotor;
+  if (!shared) r.model = std::min(r.bound, c.copy / 64.0);
+  r.limit = "sincos" + std::string(sincos_per_rotor > 1.0 ? " x2" : "") + " on " +
+            std::to_string(std::min(blocks, c.sms)) + " of " + std::to_string(c.sms) + " SMs (" +
+            std::to_string(e.cluster_blocks()) + " a replica, " +
+            std::to_string(e.active_clusters()) + " of " + std::to_string(replicas) +
+            " clusters at once)" +
+            (r.model > 0.0 && r.model < r.bound ? "; model: stream 64 B" : "");
   return r;
 }
 
@@ -258,6 +273,19 @@ int main(int argc, char** argv) {
     rows.push_back(complete_row(c, 100000, 16, 2000 / scale, 512, 1));
     rows.push_back(complete_row(c, 100000, 16, 2000 / scale, 512, 8));
     rows.push_back(complete_row(c, 20000, 64, 10000 / scale));
+    // The state in shared memory (complete_graph_resident.cu), same run: N = 10^5 on 8 blocks of
+    // 256 a replica (the [cos, sin] formed again), N = 2 10^4 x 64 on 2 blocks of 512 and of 256
+    // (formed again), and the QSS campaign's 2 10^4 x 32 beside the global stepper (4 blocks of
+    // 512, the [cos, sin] kept).
+    rows.push_back(
+        complete_row(c, 100000, 16, 2000 / scale, 256, 0, cuda::StatePlace::shared_memory));
+    rows.push_back(
+        complete_row(c, 20000, 64, 10000 / scale, 512, 0, cuda::StatePlace::shared_memory));
+    rows.push_back(
+        complete_row(c, 20000, 64, 10000 / scale, 256, 0, cuda::StatePlace::shared_memory));
+    rows.push_back(complete_row(c, 20000, 32, 10000 / scale));
+    rows.push_back(
+        complete_row(c, 20000, 32, 10000 / scale, 512, 0, cuda::StatePlace::shared_memory));
     rows.push_back(complete_row(c, 64, 64, 20000 / scale));
     rows.push_back(rank_one_row(c, 100000, 16, 2000 / scale));
     rows.push_back(rank_one_row(c, 20000, 64, 2000 / scale));

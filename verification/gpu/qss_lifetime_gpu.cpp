@@ -14,9 +14,10 @@
 //
 //   hmfnet_gpu_qss_lifetime [--sizes 1000,2000,...] [--replicas 32] [--lives 3]
 //                           [--budget-s 200] [--out DIR] [--resume FILE] [--chunks K]
-//                           [--batch 4]
+//                           [--batch 4] [--state global|shared]
 // (--chunks: stop after K launches, budget or not; for tests. --batch: rotors a thread loads
-// together, 1, 4 or 8, CompleteGraphEnsembles::set_batch; the same bits whichever.) Writes
+// together, 1, 4 or 8, CompleteGraphEnsembles::set_batch; --state: where a launch keeps the
+// state, CompleteGraphEnsembles::set_state_place; the same bits whichever.) Writes
 // DIR/qss_gpu.json (parameters, per size the steps done and the records written, the device, the
 // wall time), DIR/qss_gpu.f64 (per size in order: R_mean then energy, each replicas x records,
 // little-endian doubles) and, while a size is unfinished, DIR/qss_gpu_resume.bin
@@ -167,7 +168,7 @@ int main(int argc, char** argv) {
   double lives = 3.0, budget = 200.0;
   std::int64_t chunk = 100000, chunks = 0;
   int batch = 4;
-  std::string out = ".", resume;
+  std::string out = ".", resume, state = "global";
   if (argc % 2 == 0) {
     std::fprintf(stderr, "hmfnet_gpu_qss_lifetime: option %s has no value\n", argv[argc - 1]);
     return 2;
@@ -192,16 +193,19 @@ int main(int argc, char** argv) {
       chunks = std::stoll(value);
     } else if (key == "--batch") {
       batch = std::stoi(value);
+    } else if (key == "--state") {
+      state = value;
     } else {
       std::fprintf(stderr, "hmfnet_gpu_qss_lifetime: unknown option %s\n", key.c_str());
       return 2;
     }
   }
   if (replicas < 1 || !(lives > 0.0) || chunk < 1 || chunks < 0 || sizes.empty() ||
-      (batch != 1 && batch != 4 && batch != 8)) {
+      (batch != 1 && batch != 4 && batch != 8) || (state != "global" && state != "shared")) {
     std::fprintf(stderr,
                  "hmfnet_gpu_qss_lifetime: --replicas and --chunk must be >= 1, --lives > 0, "
-                 "--chunks >= 0, --batch 1, 4 or 8 and --sizes not empty\n");
+                 "--chunks >= 0, --batch 1, 4 or 8, --state global or shared and --sizes not "
+                 "empty\n");
     return 2;
   }
   std::string why;
@@ -222,6 +226,8 @@ int main(int argc, char** argv) {
     }
     cuda::CompleteGraphEnsembles e(systems);
     e.set_batch(batch);
+    e.set_state_place(state == "shared" ? cuda::StatePlace::shared_memory
+                                        : cuda::StatePlace::global_memory);
     for (std::size_t s = 0; s < sizes.size(); ++s) {
       std::vector<double> theta, p;
       start(sizes[s], replicas, theta, p);
@@ -257,6 +263,7 @@ int main(int argc, char** argv) {
          << "  \"replicas\": " << replicas << ",\n  \"lives\": " << lives << ",\n"
          << "  \"budget_s\": " << budget << ",\n  \"wall_s\": " << wall << ",\n"
          << "  \"batch\": " << batch << ",\n"
+         << "  \"state\": \"" << state << "\",\n"
          << "  \"resumed_from\": \"" << json_escaped(resume) << "\",\n"
          << "  \"records\": " << k_records << ",\n"
          << "  \"seeds\": \"7000 + 100 N + replica (rotor_state.cpp draw)\",\n  \"sizes\": [\n";

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "dynamics/cuda/complete_graph_ensembles.hpp"
+#include "dynamics/cuda/complete_graph_parts.cuh"
 #include "dynamics/cuda/device_bounds.hpp"
 #include "dynamics/cuda/device_buffer.cuh"
 #include "dynamics/kernel_arithmetic.hpp"
@@ -19,49 +20,9 @@ namespace hmfnet::cuda {
 namespace {
 
 namespace cg = cooperative_groups;
-
-// The most blocks a replica's cluster takes (the portable cluster size of sm_90).
-constexpr int k_max_cluster = 8;
-
-// Z's tiles: min(N, k_max_tiles) per replica, rotor m in tile m mod tiles (neighbouring threads
-// touch neighbouring rotors: coalesced), so that their sums fit shared memory (32 KiB).
-constexpr std::int64_t k_max_tiles = 2048;
-// Stages of the longest splitting held (blanes_moan: 6 drifts, 7 kicks).
-constexpr int k_max_stages = 8;
+using namespace complete_graph;
 
 std::int64_t tile_count(std::int64_t n) { return n < k_max_tiles ? n : k_max_tiles; }
-
-struct SystemInfo {
-  std::int64_t n;
-  int replicas;
-  double K;
-  std::int64_t tiles;
-  std::int64_t state_offset;   // into theta and p (replica-major inside the system)
-  std::int64_t record_offset;  // into the records
-  std::int64_t record_every;
-  std::int64_t records;
-  std::int64_t steps_before;  // of this launch
-  std::int64_t steps;         // this launch
-};
-
-struct Table {
-  int stages;                     // drifts
-  double kick[k_max_stages + 1];  // b_i h
-  double drift[k_max_stages];     // a_i h
-};
-
-struct Arrays {
-  const SystemInfo* systems;
-  const int* block_system;
-  const int* block_replica;
-  double* theta;
-  double* p;
-  double* cs;      // per rotor [cos, sin] of the current angle
-  double* z;       // per block [Re Z, Im Z] at the current state
-  double* r_sum;   // per block: the running sum of R over the open record interval
-  double* R_mean;  // records
-  double* energy;  // records
-};
 
 // The fixed pairwise tree over `tiles` sums (stride 1, 2, 4, ...), leaving the total in
 // sums[0]; the same additions whatever blockDim is.
@@ -88,29 +49,20 @@ __device__ __forceinline__ void store_phase(double theta, std::int64_t m, double
   zs += s;
 }
 
-// What a stage does to each rotor of a tile (the CPU's kick, kick-drift and sincos).
-struct RotorStage {
-  double inverse_n, K;
-  LocalField Z;      // at the stage's start
-  bool kick_first;   // the previous step's closing kick is still pending
-  double last_kick;  // b_s h
-  double kick;       // b_i h
-  double drift;      // a_i h
-};
-
-// One rotor's stage from its loaded [cos, sin], p and theta: y_n = Z (a = 1, diagonal kept), the
-// kicks and the drift, the new phase stored and added to the tile's sums.
+// One rotor's stage from its loaded [cos, sin], p and theta (stage_cell), the new phase stored
+// and added to the tile's sums.
 __device__ __forceinline__ void stage_rotor(const RotorStage& st, double c, double s, double pm,
                                             double th, std::int64_t m, double* __restrict__ theta,
                                             double* __restrict__ p, double* __restrict__ cs,
                                             double& zc, double& zs) {
-  const double g = coupling_force(st.inverse_n, c, s, st.Z);
-  if (st.kick_first) pm = kicked_momentum(pm, st.last_kick, st.K, g);
-  pm = kicked_momentum(pm, st.kick, st.K, g);
-  const double moved = drifted_angle(th, st.drift, pm);
+  double c_new = 0.0, s_new = 0.0;
+  stage_cell(st, c, s, pm, th, c_new, s_new);
   p[m] = pm;
-  theta[m] = moved;
-  store_phase(moved, m, cs, zc, zs);
+  theta[m] = th;
+  cs[2 * m] = c_new;
+  cs[2 * m + 1] = s_new;
+  zc += c_new;
+  zs += s_new;
 }
 
 // Rotors a thread loads before it updates any of them (stage_tile): 4 measured (1.15x one on an
@@ -147,18 +99,6 @@ __device__ __forceinline__ void stage_tile(const RotorStage& st, int t, int tile
   for (; m < n; m += tiles)
     stage_rotor(st, cs[2 * m], cs[2 * m + 1], p[m], theta[m], m, theta, p, cs, zc, zs);
 }
-
-// A replica's cluster of blocks (cg::this_cluster(): 1 to k_max_cluster blocks, consecutive in x):
-// block `rank` of the cluster owns the tiles t with (t / blockDim) mod blocks == rank, and each
-// rotor m belongs to tile m mod tiles, so a rotor is only ever touched by its tile's thread.
-struct Cluster {
-  int rank, blocks;
-  // The first tile of this thread, and the stride to its next.
-  __device__ int first_tile() const {
-    return rank * static_cast<int>(blockDim.x) + static_cast<int>(threadIdx.x);
-  }
-  __device__ int tile_stride() const { return blocks * static_cast<int>(blockDim.x); }
-};
 
 // Every block of the cluster gets all the tile sums: its own are in place; the others' are read
 // from their owners' shared memory between two cluster barriers (the first: every tile written;
@@ -282,14 +222,48 @@ __global__ void __launch_bounds__(1024)
 
 }  // namespace
 
+namespace {
+
+// The global stepper's kernel for a batch of 1, 4 or 8 rotors.
+auto global_kernel(int batch) {
+  return batch == 1   ? complete_graph_kernel<1>
+         : batch == 8 ? complete_graph_kernel<8>
+                      : complete_graph_kernel<k_default_batch>;
+}
+
+// Blocks per replica: as many as leave no multiprocessor idle (a power of two up to
+// k_max_cluster), but no more than the largest system's tiles fill; never fewer than `least`.
+int automatic_cluster(int replicas, std::int64_t max_tiles, int threads, int least = 1) {
+  int c = least;
+  while (2 * c <= k_max_cluster && 2 * c * replicas <= multiprocessors() &&
+         static_cast<std::int64_t>(c) * threads < max_tiles)
+    c *= 2;
+  return c;
+}
+
+// The most dynamic shared memory a block of the current device may take.
+std::size_t shared_memory_limit() {
+  int device = 0, bytes = 0;
+  check(cudaGetDevice(&device), "cudaGetDevice");
+  check(cudaDeviceGetAttribute(&bytes, cudaDevAttrMaxSharedMemoryPerBlockOptin, device),
+        "cudaDeviceGetAttribute");
+  return static_cast<std::size_t>(bytes);
+}
+
+}  // namespace
+
 struct CompleteGraphEnsembles::Impl {
   std::vector<CompleteGraphSystem> systems;
   std::vector<SystemInfo> info;
   std::vector<std::int64_t> done;
   int threads = 512;
-  int blocks = 0;   // replicas over all systems: one cluster each
-  int cluster = 1;  // blocks per cluster
+  int blocks = 0;         // replicas over all systems: one cluster each
+  int asked_cluster = 0;  // blocks per replica as constructed (0: automatic)
+  int cluster = 1;        // blocks per cluster of the global stepper
   int batch = k_default_batch;
+  StatePlace place = StatePlace::global_memory;
+  ResidentLaunch resident;  // the shared-memory stepper's shape, where place says so
+  std::size_t resident_shared = 0;
   DeviceBuffer<SystemInfo> d_info;
   DeviceBuffer<int> block_system, block_replica;
   DeviceBuffer<double> theta, p, cs, z, r_sum, R_mean, energy;
@@ -300,40 +274,69 @@ struct CompleteGraphEnsembles::Impl {
         z.data(),      r_sum.data(),        R_mean.data(),        energy.data()};
   }
 
+  std::int64_t max_tiles() const {
+    std::int64_t most = 1;
+    for (const SystemInfo& s : info) most = std::max(most, s.tiles);
+    return most;
+  }
+
+  // The largest shared memory a block of any system takes in the resident stepper.
+  std::size_t resident_bytes_of(int blocks_per_replica, bool keep_phases) const {
+    std::size_t most = 0;
+    for (const SystemInfo& s : info) {
+      most = std::max(most, resident_bytes(s, blocks_per_replica, threads, keep_phases));
+    }
+    return most;
+  }
+
   void launch(const Table& table, bool evaluate_only) {
     d_info.upload(info.data(), info.size());
+    if (place == StatePlace::shared_memory && !evaluate_only) {
+      resident.batch = batch;
+      launch_resident(arrays(), table, resident, resident_shared);
+      return;
+    }
     cudaLaunchConfig_t config{};
-    config.gridDim = dim3(static_cast<unsigned>(blocks * cluster));
-    config.blockDim = dim3(static_cast<unsigned>(threads));
-    config.dynamicSmemBytes = 2 * k_max_tiles * sizeof(double);
     cudaLaunchAttribute attribute{};
-    attribute.id = cudaLaunchAttributeClusterDimension;
-    attribute.val.clusterDim.x = static_cast<unsigned>(cluster);
-    attribute.val.clusterDim.y = 1;
-    attribute.val.clusterDim.z = 1;
-    config.attrs = &attribute;
-    config.numAttrs = 1;
-    const auto kernel = batch == 1   ? complete_graph_kernel<1>
-                        : batch == 8 ? complete_graph_kernel<8>
-                                     : complete_graph_kernel<k_default_batch>;
-    check(cudaLaunchKernelEx(&config, kernel, arrays(), table, evaluate_only),
+    cluster_config(config, attribute, blocks, cluster, threads, 2 * k_max_tiles * sizeof(double));
+    check(cudaLaunchKernelEx(&config, global_kernel(batch), arrays(), table, evaluate_only),
           "complete graph kernel");
   }
+
+  // The resident stepper's shape: blocks per replica as asked, or the fewest whose shared memory
+  // holds a replica's theta and p, then more while multiprocessors are idle; the [cos, sin] kept
+  // where they fit too.
+  void choose_resident() {
+    if ((threads & (threads - 1)) != 0 || threads > k_max_resident_threads) {
+      throw DeviceError(
+          "complete graph ensembles: the state in shared memory needs threads per block a power "
+          "of two up to " +
+          std::to_string(k_max_resident_threads) + ", not " + std::to_string(threads));
+    }
+    const std::size_t limit = shared_memory_limit();
+    int c = asked_cluster;
+    if (c == 0) {
+      c = 1;
+      while (c < k_max_cluster && resident_bytes_of(c, false) > limit) c *= 2;
+      c = automatic_cluster(blocks, max_tiles(), threads, c);
+    }
+    const std::size_t needed = resident_bytes_of(c, false);
+    if (needed > limit) {
+      throw DeviceError("complete graph ensembles: the state in shared memory needs " +
+                        std::to_string(needed) + " bytes a block on " + std::to_string(c) +
+                        " blocks of " + std::to_string(threads) +
+                        " threads a replica; the device allows " + std::to_string(limit));
+    }
+    const std::size_t keeping = resident_bytes_of(c, true);
+    resident = ResidentLaunch{blocks, c, threads, batch, keeping <= limit};
+    resident_shared = resident.keep_phases ? keeping : needed;
+    if (resident_active_clusters(resident, resident_shared) < 1) {
+      throw DeviceError("complete graph ensembles: no cluster of " + std::to_string(c) +
+                        " blocks with " + std::to_string(resident_shared) +
+                        " bytes of shared memory each fits this device");
+    }
+  }
 };
-
-namespace {
-
-// Blocks per replica: as many as leave no multiprocessor idle (a power of two up to
-// k_max_cluster), but no more than the largest system's tiles fill.
-int automatic_cluster(int replicas, std::int64_t max_tiles, int threads) {
-  int c = 1;
-  while (2 * c <= k_max_cluster && 2 * c * replicas <= multiprocessors() &&
-         static_cast<std::int64_t>(c) * threads < max_tiles)
-    c *= 2;
-  return c;
-}
-
-}  // namespace
 
 CompleteGraphEnsembles::CompleteGraphEnsembles(std::vector<CompleteGraphSystem> systems,
                                                int threads_per_block, int cluster_blocks) {
@@ -373,10 +376,9 @@ CompleteGraphEnsembles::CompleteGraphEnsembles(std::vector<CompleteGraphSystem> 
   e.done.assign(e.systems.size(), 0);
   e.threads = threads_per_block;
   e.blocks = blocks;
-  std::int64_t max_tiles = 1;
-  for (const SystemInfo& s : e.info) max_tiles = std::max(max_tiles, s.tiles);
-  e.cluster =
-      cluster_blocks > 0 ? cluster_blocks : automatic_cluster(blocks, max_tiles, threads_per_block);
+  e.asked_cluster = cluster_blocks;
+  e.cluster = cluster_blocks > 0 ? cluster_blocks
+                                 : automatic_cluster(blocks, e.max_tiles(), threads_per_block);
   std::vector<int> bs, br;
   for (std::size_t s = 0; s < e.systems.size(); ++s) {
     for (int b = 0; b < e.systems[s].replicas; ++b) {
@@ -547,7 +549,9 @@ void CompleteGraphEnsembles::synchronize() const {
   check(cudaDeviceSynchronize(), "complete graph ensembles");
 }
 
-int CompleteGraphEnsembles::cluster_blocks() const { return m_impl->cluster; }
+int CompleteGraphEnsembles::cluster_blocks() const {
+  return m_impl->place == StatePlace::shared_memory ? m_impl->resident.cluster : m_impl->cluster;
+}
 
 void CompleteGraphEnsembles::set_batch(int rotors) {
   if (rotors != 1 && rotors != k_default_batch && rotors != 8) {
@@ -558,5 +562,31 @@ void CompleteGraphEnsembles::set_batch(int rotors) {
 }
 
 int CompleteGraphEnsembles::batch() const { return m_impl->batch; }
+
+void CompleteGraphEnsembles::set_state_place(StatePlace place) {
+  if (place == StatePlace::shared_memory) m_impl->choose_resident();
+  m_impl->place = place;
+}
+
+StatePlace CompleteGraphEnsembles::state_place() const { return m_impl->place; }
+
+bool CompleteGraphEnsembles::keeps_phases() const {
+  return m_impl->place == StatePlace::shared_memory && m_impl->resident.keep_phases;
+}
+
+int CompleteGraphEnsembles::active_clusters() const {
+  const Impl& e = *m_impl;
+  if (e.place == StatePlace::shared_memory) {
+    return resident_active_clusters(e.resident, e.resident_shared);
+  }
+  cudaLaunchConfig_t config{};
+  cudaLaunchAttribute attribute{};
+  cluster_config(config, attribute, e.blocks, e.cluster, e.threads,
+                 2 * k_max_tiles * sizeof(double));
+  int count = 0;
+  check(cudaOccupancyMaxActiveClusters(&count, global_kernel(e.batch), &config),
+        "cudaOccupancyMaxActiveClusters");
+  return count;
+}
 
 }  // namespace hmfnet::cuda

@@ -24,6 +24,13 @@
 
 namespace hmfnet::cuda {
 
+/// Where a launch keeps the replicas' angles and momenta (complete_graph_resident.cu says why).
+enum class StatePlace {
+  global_memory,  ///< read and written at every stage
+  shared_memory,  ///< in the replica's blocks for the whole launch, with their [cos, sin] where
+                  ///< those fit, else formed again from the angles at each stage
+};
+
 struct CompleteGraphSystem {
   std::int64_t n = 0;
   int replicas = 1;
@@ -76,6 +83,17 @@ class CompleteGraphEnsembles {
   /// do not depend on it; the benchmark measures each.
   void set_batch(int rotors);
   int batch() const;
+  /// Where the state is kept from the next launch on; the results do not depend on it. Shared
+  /// memory needs threads per block a power of two up to 512 and each replica's rotors in its
+  /// blocks' shared memory (about 16 N / blocks bytes a block): with automatic blocks per replica,
+  /// the fewest that hold them (then more while multiprocessors are idle); throws DeviceError
+  /// naming the bytes a block needs and the device's limit where they do not fit.
+  void set_state_place(StatePlace place);
+  StatePlace state_place() const;
+  /// Whether the shared-memory stepper keeps the [cos, sin] of the angles (else forms them again).
+  bool keeps_phases() const;
+  /// Replicas' clusters the device runs at once in the current place (the rest wait for them).
+  int active_clusters() const;
 
  private:
   struct Impl;

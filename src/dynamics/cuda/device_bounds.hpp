@@ -22,7 +22,7 @@ double gather_rate(std::int64_t records, int record_bytes);
 /// launches).
 double launch_seconds();
 
-/// The device's multiprocessor count.
+/// The current device's multiprocessor count (cuda::use_device).
 int multiprocessors();
 
 /// sincos_one (kernel_arithmetic.hpp) of distinct angles in +-100: angles per second.
